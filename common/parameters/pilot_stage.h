@@ -1,0 +1,33 @@
+#pragma once
+#include <string>
+namespace dealii { class ParameterHandler; }
+
+namespace servodrift
+{
+  /// Subsection "Pilot stage": fixed orifices, nozzles and the nozzle-flapper gap (model.md 1.8-1.10,
+  /// 1.14, 2.6, D11). Dimensions at the reference temperature T0.
+  struct PilotStageParameters
+  {
+    static constexpr const char *subsection = "Pilot stage";
+    std::string model_level;        ///< "reduced-order" (E21-E23)
+    double fixed_orifice_diameter;  ///< D_0 [m]
+    double fixed_orifice_length;    ///< l_0 [m]
+    double nozzle_diameter;         ///< D_N [m]
+    double land_diameter;           ///< D_land, outer diameter of the nozzle tip [m]
+    double null_gap;                ///< x0 [m]
+    double nozzle_seat_span;        ///< body span between the two nozzle seats [m]
+    double nozzle_length;           ///< length of each nozzle from its seat to its tip [m]
+    double nozzle_discharge_coefficient; ///< C_d,inf of the curtain orifice (E22) [1]
+    double control_cavity_volume;   ///< V_0 (E33; dynamics) [m^3]
+
+    enum class OrificeLaw { lichtarowicz, paper_fit };       ///< E21 or E26 (D2)
+    enum class NozzleLaw { curtain, paper_fit };             ///< E22 or E27 T-part (D2)
+    enum class FlapperForceLaw { momentum, paper_table };    ///< E23 or section 3 item 10 (D2)
+    OrificeLaw fixed_orifice_law;
+    NozzleLaw nozzle_law;
+    FlapperForceLaw flapper_force_law;
+
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace servodrift

@@ -1,0 +1,63 @@
+#include "common/parameters/spool.h"
+
+#include "common/parameters/parameter_helpers.h"
+
+namespace servodrift
+{
+  using namespace parameters;
+
+  void SpoolParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection);
+    prm.declare_entry("Control diameter", "5.0e-3", Patterns::Double(0, 1),
+                      "Spool end diameter d_v; the control pressures act on A_v = pi d_v^2/4 (E34, "
+                      "E35). [m]");
+    prm.declare_entry("Feedback diameter", "4.0e-3", Patterns::Double(0, 1),
+                      "Feedback plunger diameter d_fb; the brake pressure acts on A_fb = pi d_fb^2/4 "
+                      "against the control force (E35). [m]");
+    prm.declare_entry("Mass", "4.0e-3", Patterns::Double(0, 10), "Spool mass m_v (E35; dynamics). [kg]");
+    prm.declare_entry("Viscous damping", "0.8", Patterns::Double(0, 1e4),
+                      "Viscous damping B_v at T0, scaled with the oil's dynamic viscosity (E35; "
+                      "dynamics). [N*s/m]");
+    prm.declare_entry("Spring rate", "1.0e3", Patterns::Double(0, 1e8),
+                      "Return-spring rate k_s (E35, C5). [N/m]");
+    prm.declare_entry("Spring preload", "0.33", Patterns::Double(-1e4, 1e4),
+                      "Return-spring preload F_s0, pushing towards negative x_v (E35, C5). [N]");
+    prm.declare_entry("Area gradient", "15.708e-3", Patterns::Double(0, 1),
+                      "Metering area gradient W, pi d_v for a full annulus (E36). [m]");
+    prm.declare_entry("Overlap", "20e-6", Patterns::Double(0, 1e-2),
+                      "Overlap x_ov of each metering land, positive = overlapped; must be positive for "
+                      "a unique blocked-port steady state (E36). [m]");
+    prm.declare_entry("Stroke limit", "0.4e-3", Patterns::Double(0, 0.1),
+                      "Spool travel limit: |x_v| <= stroke limit; beyond it the spool is on its stop. "
+                      "[m]");
+    prm.declare_entry("Discharge coefficient", "0.61", Patterns::Double(0, 1),
+                      "Discharge coefficient C_dv of the metering edges (E35, E36). [1]");
+    prm.declare_entry("Jet angle", "69", Patterns::Double(0, 90),
+                      "Jet angle of the steady flow force (E35). [deg]");
+    prm.declare_entry("Radial clearance", "3e-6", Patterns::Double(0, 1e-3),
+                      "Radial clearance c_r between spool and sleeve (lap leakage, B_v). [m]");
+    prm.declare_entry("Brake volume", "2e-5", Patterns::Double(0, 1),
+                      "Volume V_B of brake port, line and brake (E37; dynamics). [m^3]");
+    prm.leave_subsection();
+  }
+
+  void SpoolParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection);
+    control_diameter = prm.get_double("Control diameter");
+    feedback_diameter = prm.get_double("Feedback diameter");
+    mass = prm.get_double("Mass");
+    viscous_damping = prm.get_double("Viscous damping");
+    spring_rate = prm.get_double("Spring rate");
+    spring_preload = prm.get_double("Spring preload");
+    area_gradient = prm.get_double("Area gradient");
+    overlap = prm.get_double("Overlap");
+    stroke_limit = prm.get_double("Stroke limit");
+    discharge_coefficient = prm.get_double("Discharge coefficient");
+    jet_angle = prm.get_double("Jet angle");
+    radial_clearance = prm.get_double("Radial clearance");
+    brake_volume = prm.get_double("Brake volume");
+    prm.leave_subsection();
+  }
+} // namespace servodrift

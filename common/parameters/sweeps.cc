@@ -1,0 +1,73 @@
+#include "common/parameters/sweeps.h"
+
+#include "common/parameters/parameter_helpers.h"
+#include "common/units.h"
+
+namespace servodrift
+{
+  using namespace parameters;
+
+  void SweepParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection);
+    prm.declare_entry("Table temperatures", "40, 50, 60, 70, 80, 90, 100, 110, 120",
+                      double_list(-273.15, 1000, 1),
+                      "Temperatures at which every stage writes its coefficient table (D3); strictly "
+                      "increasing, inside the fluid's viscosity-law window. [degC]");
+    prm.declare_entry("Motor angles",
+                      "-0.5, -0.45, -0.4, -0.35, -0.3, -0.25, -0.2, -0.15, -0.1, -0.05, 0, 0.05, 0.1, "
+                      "0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5",
+                      double_list(-10, 10, 2),
+                      "Armature angles of the torque_motor table, strictly increasing; they must cover "
+                      "the flapper travel +-x0/r plus the magnetic-null offsets of the drift map, and "
+                      "include +-0.1 deg for the secant K_m (C1). [deg]");
+    prm.declare_entry("Motor currents",
+                      "-0.03, -0.025, -0.02, -0.015, -0.01, -0.005, 0, 0.005, 0.01, 0.015, 0.02, 0.025, "
+                      "0.03",
+                      double_list(-10, 10, 2),
+                      "Differential coil currents of the torque_motor table, strictly increasing; must "
+                      "include 0 and the rated current. [A]");
+    prm.declare_entry("Pressure fractions",
+                      "0, 0.0025, 0.01, 0.025, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1",
+                      double_list(0, 1, 2),
+                      "Pressure differences of the fixed_orifice and nozzle_flapper tables as "
+                      "fractions of p_s - p_r, strictly increasing; 0 to 1 covers every bridge state. "
+                      "[1]");
+    prm.declare_entry("Gap fractions",
+                      "0, 0.05, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1, 1.125, 1.25, 1.375, "
+                      "1.5, 1.625, 1.75, 1.875, 2, 2.2",
+                      double_list(0, 10, 2),
+                      "Nozzle-flapper gaps of the nozzle_flapper table as fractions of the null gap x0 "
+                      "at T0, strictly increasing; 0 to 2 x0(T)/x0 covers the flapper's travel "
+                      "between the nozzles. [1]");
+    prm.declare_entry("Drift temperatures",
+                      "40, 45, 50, 55, 60, 65, 70, 75, 80, 85, 90, 95, 100, 105, 110, 115, 120",
+                      double_list(-273.15, 1000, 2),
+                      "Temperatures of the drift map (D9), strictly increasing, within the table "
+                      "temperatures. [degC]");
+    prm.declare_entry("Deviation angles",
+                      "-0.05, -0.045, -0.04, -0.035, -0.03, -0.025, -0.02, -0.015, -0.01, -0.005, 0, "
+                      "0.005, 0.01, 0.015, 0.02, 0.025, 0.03, 0.035, 0.04, 0.045, 0.05",
+                      double_list(-10, 10, 1),
+                      "Assembly deviation angles theta_d of the drift map (D8), strictly increasing. "
+                      "[deg]");
+    prm.leave_subsection();
+  }
+
+  void SweepParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection);
+    table_temperatures = get_double_list(prm, "Table temperatures");
+    motor_angles = get_double_list(prm, "Motor angles");
+    for (double &a : motor_angles)
+      a *= units::degree;
+    motor_currents = get_double_list(prm, "Motor currents");
+    pressure_fractions = get_double_list(prm, "Pressure fractions");
+    gap_fractions = get_double_list(prm, "Gap fractions");
+    drift_temperatures = get_double_list(prm, "Drift temperatures");
+    deviation_angles = get_double_list(prm, "Deviation angles");
+    for (double &a : deviation_angles)
+      a *= units::degree;
+    prm.leave_subsection();
+  }
+} // namespace servodrift

@@ -1,0 +1,113 @@
+#include "common/parameters/torque_motor.h"
+
+#include "common/parameters/parameter_helpers.h"
+
+namespace servodrift
+{
+  using namespace parameters;
+
+  void TorqueMotorParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection);
+    prm.declare_entry("Model level", "reduced-order", Patterns::Selection("reduced-order"),
+                      "Which model computes the torque_motor table: 'reduced-order' is the four-mesh "
+                      "magnetic circuit E3 with E6-E10 (D13). [-]");
+    prm.declare_entry("Turns per coil", "1100", Patterns::Integer(1, 1000000),
+                      "Turns N_c of each of the two coils, one per armature arm (2.1). [1]");
+    prm.declare_entry("Coil connection", "push-pull", Patterns::Selection("push-pull|series-aiding"),
+                      "push-pull: net control MMF N_c*i for the differential current i (D7, Merritt); "
+                      "series-aiding: 2*N_c*i (doubles K_t). [-]");
+    prm.declare_entry("Pivot to pole-face distance", "14.8e-3", Patterns::Double(0, 1),
+                      "Distance a from the armature pivot to the centre of each pole face (E2). [m]");
+    prm.declare_entry("Pole face width", "4.0e-3", Patterns::Double(0, 1),
+                      "Pole-face width w_p (across the armature); A_g = w_p*l_p (E2). [m]");
+    prm.declare_entry("Pole face length", "4.0e-3", Patterns::Double(0, 1),
+                      "Pole-face length l_p (along the armature) (E2). [m]");
+    prm.declare_entry("Gap fringing", "none", Patterns::Selection("none|expanded-area"),
+                      "none: gap area w_p*l_p; expanded-area: (w_p + g)(l_p + g), a simple fringing "
+                      "correction (E2). [-]");
+    prm.declare_entry("Armature thickness", "3.0e-3", Patterns::Double(0, 1),
+                      "Armature thickness H_ar across the gaps (E6, E7). [m]");
+    prm.declare_entry("Armature width", "4.0e-3", Patterns::Double(0, 1),
+                      "Armature width, out of the plane of the planar field model (2.2). [m]");
+    prm.declare_entry("Armature length", "33.6e-3", Patterns::Double(0, 1),
+                      "Armature length, tip to tip (2.2). [m]");
+    prm.declare_entry("Armature height", "10.8e-3", Patterns::Double(0, 1),
+                      "Height H_a of the armature centre above the datum, set by the spring tube "
+                      "(E6, E7). [m]");
+    prm.declare_entry("Lower pole height", "9.0e-3", Patterns::Double(0, 1),
+                      "Height H_c of the lower pole face above the datum (E6). [m]");
+    prm.declare_entry("Upper pole thickness", "3.0e-3", Patterns::Double(0, 1),
+                      "Thickness H_c' of the upper pole plate (E7). [m]");
+    prm.declare_entry("Upper pole tip protrusion", "2.4e-3", Patterns::Double(0, 1),
+                      "Downward protrusion h_p of the upper pole tip below the magnet seat (E7). [m]");
+    prm.declare_entry("Magnet length", "12.0e-3", Patterns::Double(0, 1),
+                      "Magnet length l_m along its magnetisation, which is also its height H_m in the "
+                      "stack-up (E7, E8). [m]");
+    prm.declare_entry("Magnet width", "5.0e-3", Patterns::Double(0, 1),
+                      "Magnet cross-section width; A_m = width*depth per magnet (E2). [m]");
+    prm.declare_entry("Magnet depth", "5.0e-3", Patterns::Double(0, 1),
+                      "Magnet cross-section depth (E2). [m]");
+    prm.declare_entry("Number of magnets", "2", Patterns::Integer(1, 16),
+                      "Magnets in parallel between the pole plates (E2: A_m,tot = n*A_m). [1]");
+    prm.declare_entry("Remanence", "0.90", Patterns::Double(0, 2.5),
+                      "Magnet remanence B_r0 at the reference temperature; LNGT60 / AlNiCo 8 (D4). [T]");
+    prm.declare_entry("Remanence temperature coefficient", "-2.5e-4", Patterns::Double(-0.1, 0.1),
+                      "Reversible temperature coefficient alpha_Br of the remanence (E8, D4). [1/degC]");
+    prm.declare_entry("Irreversible loss", "0", Patterns::Double(0, 1),
+                      "Irreversible remanence loss R_irr of the magnet (E8). [1]");
+    prm.declare_entry("Recoil permeability", "6.51", Patterns::Double(1, 1e4),
+                      "Relative permeability mu_rm of the linear recoil line, so that H_cB = "
+                      "B_r/(mu0*mu_rm) = 110 kA/m (E8, D4). [1]");
+    prm.declare_entry("Leakage reluctance", "1.42e7", Patterns::Double(0, 1e12),
+                      "Leakage reluctance R_l between the pole plates at T0 (E3); scales as 1/length "
+                      "with the pole-piece expansion. [A/Wb]");
+    prm.declare_entry("Pole piece reluctance", "0", Patterns::Double(0, 1e12),
+                      "Pole-piece (magnetic conductor) reluctance R_c in series with the magnets (E3). "
+                      "[A/Wb]");
+    prm.declare_entry("Armature reluctance", "0", Patterns::Double(0, 1e12),
+                      "Armature reluctance R_a between its two ends (E3). [A/Wb]");
+    prm.declare_entry("Saturation polarisation", "1.50", Patterns::Double(0, 3),
+                      "Saturation polarisation J_s of the 1J50 arctan B-H law "
+                      "B = mu0 H + (2 J_s/pi) atan(pi chi0 mu0 H/(2 J_s)) (2.2); field level. [T]");
+    prm.declare_entry("Initial susceptibility", "2e4", Patterns::Double(0, 1e7),
+                      "Initial susceptibility chi0 of the 1J50 arctan B-H law (2.2); field level. [1]");
+    prm.declare_entry("Model depth", "4.0e-3", Patterns::Double(0, 1),
+                      "Out-of-plane depth w_d of the planar field model (D10, 4.1). [m]");
+    prm.leave_subsection();
+  }
+
+  void TorqueMotorParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection);
+    model_level = prm.get("Model level");
+    turns_per_coil = prm.get_integer("Turns per coil");
+    series_aiding = prm.get("Coil connection") == "series-aiding";
+    pivot_to_pole_distance = prm.get_double("Pivot to pole-face distance");
+    pole_face_width = prm.get_double("Pole face width");
+    pole_face_length = prm.get_double("Pole face length");
+    fringing_expanded_area = prm.get("Gap fringing") == "expanded-area";
+    armature_thickness = prm.get_double("Armature thickness");
+    armature_width = prm.get_double("Armature width");
+    armature_length = prm.get_double("Armature length");
+    armature_height = prm.get_double("Armature height");
+    lower_pole_height = prm.get_double("Lower pole height");
+    upper_pole_thickness = prm.get_double("Upper pole thickness");
+    upper_pole_tip_protrusion = prm.get_double("Upper pole tip protrusion");
+    magnet_length = prm.get_double("Magnet length");
+    magnet_width = prm.get_double("Magnet width");
+    magnet_depth = prm.get_double("Magnet depth");
+    number_of_magnets = prm.get_integer("Number of magnets");
+    remanence = prm.get_double("Remanence");
+    remanence_temperature_coefficient = prm.get_double("Remanence temperature coefficient");
+    irreversible_loss = prm.get_double("Irreversible loss");
+    recoil_permeability = prm.get_double("Recoil permeability");
+    leakage_reluctance = prm.get_double("Leakage reluctance");
+    pole_piece_reluctance = prm.get_double("Pole piece reluctance");
+    armature_reluctance = prm.get_double("Armature reluctance");
+    saturation_polarisation = prm.get_double("Saturation polarisation");
+    initial_susceptibility = prm.get_double("Initial susceptibility");
+    model_depth = prm.get_double("Model depth");
+    prm.leave_subsection();
+  }
+} // namespace servodrift

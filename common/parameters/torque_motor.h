@@ -1,0 +1,51 @@
+#pragma once
+#include <string>
+namespace dealii { class ParameterHandler; }
+
+namespace servodrift
+{
+  /// Subsection "Torque motor" (model.md 1.2-1.5, 2.2, D4, D7, D10). Lengths are at the reference
+  /// temperature T0; common/thermal_laws gives them at any temperature (E6-E8).
+  struct TorqueMotorParameters
+  {
+    static constexpr const char *subsection = "Torque motor";
+    std::string model_level; ///< "reduced-order" (E3 circuit); the field level comes with the FEM solver
+
+    unsigned int turns_per_coil;  ///< N_c [1]
+    bool series_aiding;           ///< false: push-pull, net MMF N_c i (D7); true: 2 N_c i
+    double pivot_to_pole_distance; ///< a [m]
+    double pole_face_width;       ///< w_p [m]
+    double pole_face_length;      ///< l_p [m]
+    bool fringing_expanded_area;  ///< A_g,eff = (w_p + g)(l_p + g) instead of w_p l_p (E2)
+
+    double armature_thickness; ///< H_ar [m]
+    double armature_width;     ///< [m]
+    double armature_length;    ///< [m]
+    double armature_height;    ///< H_a, datum to armature centre (E6, E7) [m]
+    double lower_pole_height;  ///< H_c (E6) [m]
+    double upper_pole_thickness; ///< H_c' (E7) [m]
+    double upper_pole_tip_protrusion; ///< h_p (E7) [m]
+
+    double magnet_length;   ///< l_m = H_m, along the magnetisation (E7, E8) [m]
+    double magnet_width;    ///< [m]
+    double magnet_depth;    ///< [m]
+    unsigned int number_of_magnets; ///< magnets in parallel [1]
+    double remanence;       ///< B_r0 at T0 [T]
+    double remanence_temperature_coefficient; ///< alpha_Br [1/degC]
+    double irreversible_loss;   ///< R_irr [1]
+    double recoil_permeability; ///< mu_rm [1]
+    double leakage_reluctance;  ///< R_l at T0 [A/Wb]
+    double pole_piece_reluctance; ///< R_c [A/Wb]
+    double armature_reluctance;   ///< R_a [A/Wb]
+
+    double saturation_polarisation; ///< J_s of the 1J50 arctan B-H law [T]
+    double initial_susceptibility;  ///< chi0 of the 1J50 arctan B-H law [1]
+    double model_depth;             ///< w_d of the planar field model (D10) [m]
+
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Net control MMF per ampere of differential current: N_c (push-pull) or 2 N_c (series) [1].
+    double effective_turns() const { return series_aiding ? 2.0 * turns_per_coil : 1.0 * turns_per_coil; }
+  };
+} // namespace servodrift

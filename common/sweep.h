@@ -1,0 +1,45 @@
+#pragma once
+// Sweeps: a sweep is a list of independent cases. Under `mpirun -np N' the cases are shared
+// cyclically over the ranks of MPI_COMM_WORLD (case k on rank k mod N), the rows are gathered in
+// case order on every rank, and only rank 0 writes files. Each case is computed by itself, so the
+// result, and the table written from it, is byte-identical for any N.
+#include "common/parameters/output.h"
+
+#include <chrono>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace servodrift
+{
+  /// Progress of a sweep on stderr (rank 0 only): an updating line on a terminal, plain lines
+  /// (at most one every two seconds) otherwise, and a closing line with the case count and time.
+  class Progress
+  {
+  public:
+    Progress(std::string label, std::size_t n_cases, OutputParameters::Progress mode);
+    /// `done' of the local share of `share' cases finished (the estimate assumes the other ranks
+    /// go as fast).
+    void update(std::size_t done, std::size_t share);
+    void finish();
+
+  private:
+    std::string label;
+    std::size_t n_cases;
+    bool active, terminal;
+    std::chrono::steady_clock::time_point start, last_print;
+  };
+
+  using CaseRows = std::vector<std::vector<double>>;
+
+  /// Runs cases 0..n_cases-1 over the MPI ranks and returns all rows, in case order, on every rank.
+  /// An exception in any case is rethrown on every rank (the one of the lowest failing case) as a
+  /// std::runtime_error with the same message, so that no rank waits for another.
+  CaseRows run_sweep(const std::string &label, std::size_t n_cases,
+                     const std::function<CaseRows(std::size_t case_index)> &compute_case,
+                     OutputParameters::Progress progress);
+
+  /// MPI rank and size of this process in MPI_COMM_WORLD (0 and 1 without MPI).
+  unsigned int mpi_rank();
+  unsigned int mpi_size();
+} // namespace servodrift

@@ -1,0 +1,124 @@
+#include "common/thermal_laws.h"
+
+#include "common/error.h"
+#include "common/units.h"
+
+#include <cmath>
+
+namespace servodrift::laws
+{
+  Oil::Oil(const FluidParameters &fluid, double reference_temperature)
+    : fluid(fluid)
+    , T0(reference_temperature)
+  {}
+
+  void Oil::check_temperature(double T, const char *what) const
+  {
+    if (!(T >= fluid.minimum_temperature && T <= fluid.maximum_temperature))
+      throw InputError(std::string(what) + " " + format_number(T) +
+                       " degC is outside the window of the oil's viscosity law [" +
+                       format_number(fluid.minimum_temperature) + ", " +
+                       format_number(fluid.maximum_temperature) +
+                       "] degC (set `Fluid/Minimum temperature' and `Fluid/Maximum temperature' only "
+                       "where the law holds)");
+  }
+
+  ValueAndSlope Oil::kinematic_viscosity(double T) const
+  {
+    check_temperature(T, "oil temperature");
+    if (fluid.viscosity_law == FluidParameters::ViscosityLaw::vogel)
+      {
+        // E16: nu = A exp(B/(T + C)),  dnu/dT = -nu B/(T + C)^2
+        const double u = T + fluid.vogel_c;
+        const double nu = fluid.vogel_a * std::exp(fluid.vogel_b / u);
+        return {nu, -nu * fluid.vogel_b / (u * u)};
+      }
+    // E14 without its pressure term: nu = nu0 exp(-alpha_nu (T - T0))
+    const double nu = fluid.reference_viscosity * std::exp(-fluid.viscosity_temperature_coefficient * (T - T0));
+    return {nu, -fluid.viscosity_temperature_coefficient * nu};
+  }
+
+  ValueAndSlope Oil::density(double T) const
+  {
+    check_temperature(T, "oil temperature");
+    // E15 without its pressure term
+    return {fluid.reference_density * (1.0 - fluid.density_temperature_coefficient * (T - T0)),
+            -fluid.reference_density * fluid.density_temperature_coefficient};
+  }
+
+  double Oil::dynamic_viscosity(double T) const
+  {
+    return density(T).value * kinematic_viscosity(T).value;
+  }
+
+  double Oil::effective_bulk_modulus(double T) const
+  {
+    check_temperature(T, "oil temperature");
+    return fluid.bulk_modulus * (1.0 - fluid.bulk_modulus_temperature_coefficient * (T - T0));
+  }
+
+  double youngs_modulus(const SpringTubeParameters &tube, double T)
+  {
+    // E12
+    return tube.youngs_modulus * (1.0 - tube.modulus_temperature_coefficient * (T - tube.reference_temperature));
+  }
+
+  SpringTubeGeometry spring_tube_geometry(const SpringTubeParameters &tube, const ThermalExpansion &alpha, double T)
+  {
+    // E13: D, d, l all scale with 1 + alpha_s (T - T_ref)
+    const double T_ref = tube.reference_temperature;
+    return {expanded(tube.outer_diameter, alpha.spring_tube, T, T_ref),
+            expanded(tube.inner_diameter, alpha.spring_tube, T, T_ref),
+            expanded(tube.length, alpha.spring_tube, T, T_ref)};
+  }
+
+  TorqueMotorGeometry torque_motor_geometry(const TorqueMotorParameters &m, const ThermalExpansion &alpha,
+                                            double T, double T0)
+  {
+    TorqueMotorGeometry g;
+    const double H_a = expanded(m.armature_height, alpha.spring_tube, T, T0);         // set by the tube
+    const double half_H_ar = 0.5 * expanded(m.armature_thickness, alpha.armature, T, T0);
+    const double H_c = expanded(m.lower_pole_height, alpha.pole_pieces, T, T0);
+    const double H_c_upper = expanded(m.upper_pole_thickness, alpha.pole_pieces, T, T0);
+    const double H_m = expanded(m.magnet_length, alpha.magnet, T, T0);
+    const double h_p = expanded(m.upper_pole_tip_protrusion, alpha.pole_pieces, T, T0);
+    g.lower_gap = H_a - half_H_ar - H_c;                          // E6
+    g.upper_gap = H_c_upper + H_m - h_p - H_a - half_H_ar;        // E7
+    g.pivot_to_pole_distance = expanded(m.pivot_to_pole_distance, alpha.armature, T, T0);
+    g.pole_face_width = expanded(m.pole_face_width, alpha.pole_pieces, T, T0);
+    g.pole_face_length = expanded(m.pole_face_length, alpha.pole_pieces, T, T0);
+    g.armature_thickness = 2.0 * half_H_ar;
+    g.magnet_length = H_m;
+    g.magnet_area = expanded(m.magnet_width, alpha.magnet, T, T0) * expanded(m.magnet_depth, alpha.magnet, T, T0);
+    g.pole_piece_scale = expanded(1.0, alpha.pole_pieces, T, T0);
+    return g;
+  }
+
+  double remanence(const TorqueMotorParameters &m, double T, double T0)
+  {
+    // E8
+    return m.remanence * (1.0 + m.remanence_temperature_coefficient * (T - T0)) * (1.0 - m.irreversible_loss);
+  }
+
+  PilotStageGeometry pilot_stage_geometry(const PilotStageParameters &p, const ArmatureParameters &armature,
+                                          const ThermalExpansion &alpha, double T, double T0)
+  {
+    PilotStageGeometry g;
+    g.fixed_orifice_diameter = expanded(p.fixed_orifice_diameter, alpha.nozzle, T, T0);
+    g.fixed_orifice_length = expanded(p.fixed_orifice_length, alpha.nozzle, T, T0);
+    g.nozzle_diameter = expanded(p.nozzle_diameter, alpha.nozzle, T, T0);
+    g.land_diameter = expanded(p.land_diameter, alpha.nozzle, T, T0);
+    // 2.3: the two gaps are what is left of the seat span after two nozzles and the flapper
+    g.null_gap = p.null_gap + 0.5 * (T - T0) *
+                                (alpha.body * p.nozzle_seat_span - 2.0 * alpha.nozzle * p.nozzle_length -
+                                 alpha.flapper * armature.flapper_width);
+    return g;
+  }
+
+  SpoolGeometry spool_geometry(const SpoolParameters &s, const ThermalExpansion &alpha, double T, double T0)
+  {
+    const double d_v = expanded(s.control_diameter, alpha.spool, T, T0);
+    const double d_fb = expanded(s.feedback_diameter, alpha.spool, T, T0);
+    return {0.25 * units::pi * d_v * d_v, 0.25 * units::pi * d_fb * d_fb};
+  }
+} // namespace servodrift::laws

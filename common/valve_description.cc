@@ -1,0 +1,483 @@
+#include "common/valve_description.h"
+
+#include "common/error.h"
+#include "common/provenance.h"
+#include "common/thermal_laws.h"
+#include "common/units.h"
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace servodrift
+{
+  namespace
+  {
+    using dealii::ParameterHandler;
+
+    void declare_all(ParameterHandler &prm)
+    {
+      OperatingConditions::declare_parameters(prm);
+      TorqueMotorParameters::declare_parameters(prm);
+      ThermalExpansion::declare_parameters(prm);
+      SpringTubeParameters::declare_parameters(prm);
+      ArmatureParameters::declare_parameters(prm);
+      PilotStageParameters::declare_parameters(prm);
+      SpoolParameters::declare_parameters(prm);
+      FluidParameters::declare_parameters(prm);
+      OffsetParameters::declare_parameters(prm);
+      SweepParameters::declare_parameters(prm);
+      FitParameters::declare_parameters(prm);
+      OutputParameters::declare_parameters(prm);
+    }
+
+    void parse_all(ParameterHandler &prm, ValveDescription &v)
+    {
+      v.operating.parse_parameters(prm);
+      v.torque_motor.parse_parameters(prm);
+      v.expansion.parse_parameters(prm);
+      v.spring_tube.parse_parameters(prm);
+      v.armature.parse_parameters(prm);
+      v.pilot.parse_parameters(prm);
+      v.spool.parse_parameters(prm);
+      v.fluid.parse_parameters(prm);
+      v.offsets.parse_parameters(prm);
+      v.sweeps.parse_parameters(prm);
+      v.fits.parse_parameters(prm);
+      v.output.parse_parameters(prm);
+    }
+
+    /// deal.II's messages span several indented lines; ours are one line.
+    std::string one_line(const std::string &text)
+    {
+      std::string out;
+      bool space = false;
+      for (char c : text)
+        if (std::isspace(static_cast<unsigned char>(c)))
+          space = !out.empty();
+        else
+          {
+            if (space)
+              out += ' ';
+            out += c;
+            space = false;
+          }
+      return out;
+    }
+
+    std::string info_of(const dealii::ExceptionBase &e)
+    {
+      std::ostringstream s;
+      e.print_info(s);
+      return one_line(s.str());
+    }
+
+    /// The subsection path ("A/B") open at a given line of a PRM file.
+    std::string subsection_at_line(const std::string &file, int line_number)
+    {
+      std::ifstream in(file);
+      std::vector<std::string> path;
+      std::string line;
+      for (int k = 1; k < line_number && std::getline(in, line); ++k)
+        {
+          line = one_line(line.substr(0, line.find('#')));
+          if (line.rfind("subsection ", 0) == 0)
+            path.push_back(line.substr(11));
+          else if (line == "end" && !path.empty())
+            path.pop_back();
+        }
+      std::string s;
+      for (const auto &p : path)
+        s += p + "/";
+      return s;
+    }
+
+    /// Turns a deal.II parse error of `file' into one line naming file, line, entry and range.
+    std::string describe_parse_error(const std::string &file, const dealii::ExceptionBase &e)
+    {
+      const std::string info = info_of(e);
+      static const std::regex invalid(
+        R"(Line <(\d+)> of file <[^>]*>: The entry value (.*) for the entry named (.*) does not match the given pattern: (.*))");
+      static const std::regex located(R"(Line <(\d+)> of file <[^>]*>:? ?(.*))");
+      std::smatch m;
+      if (std::regex_match(info, m, invalid))
+        {
+          const int line = std::stoi(m[1]);
+          return file + ":" + m[1].str() + ": `" + subsection_at_line(file, line) + m[3].str() + "' = " +
+                 m[2].str() + " is not allowed; allowed: " + m[4].str();
+        }
+      if (std::regex_match(info, m, located))
+        return file + ":" + m[1].str() + ": " + m[2].str() + " (`servodrift params' lists every entry)";
+      return file + ": " + info;
+    }
+
+    void read_input_file(ParameterHandler &prm, const std::string &file)
+    {
+      {
+        std::ifstream probe(file);
+        if (!probe)
+          throw InputError(file + ": cannot open the parameter file (does it exist and is it readable?)");
+      }
+      const auto dot = file.rfind('.');
+      const std::string extension = dot == std::string::npos ? "" : file.substr(dot);
+      try
+        {
+          if (extension == ".prm")
+            prm.parse_input(file);
+          else if (extension == ".json")
+            {
+              std::ifstream in(file);
+              prm.parse_input_from_json(in);
+            }
+          else
+            throw InputError(file + ": unknown parameter file format `" + extension +
+                             "' (use a .prm or a .json file)");
+        }
+      catch (const InputError &)
+        {
+          throw;
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          throw InputError(describe_parse_error(file, e));
+        }
+      catch (const boost::property_tree::json_parser_error &e)
+        {
+          throw InputError(file + ":" + std::to_string(e.line()) + ": not valid JSON: " + e.message());
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError(file + ": " + one_line(e.what()));
+        }
+    }
+
+    /// Applies one "Subsection/Key=value" override.
+    void apply_override(ParameterHandler &prm, const std::string &override_text)
+    {
+      const std::string where = "--set \"" + override_text + "\"";
+      const auto eq = override_text.find('=');
+      if (eq == std::string::npos)
+        throw InputError(where + ": expected \"Subsection/Key=value\"");
+      std::string path = override_text.substr(0, eq);
+      const std::string value = one_line(override_text.substr(eq + 1));
+      std::vector<std::string> sections;
+      for (std::size_t slash; (slash = path.find('/')) != std::string::npos; path = path.substr(slash + 1))
+        sections.push_back(one_line(path.substr(0, slash)));
+      const std::string key = one_line(path);
+      if (sections.empty())
+        throw InputError(where + ": expected \"Subsection/Key=value\"; every entry lives in a subsection");
+      if (!prm.subsection_path_exists(sections))
+        throw InputError(where + ": no subsection `" + sections.front() +
+                         "' (`servodrift params' lists every entry)");
+      for (const auto &s : sections)
+        prm.enter_subsection(s);
+      try
+        {
+          prm.set(key, value);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          for (std::size_t k = 0; k < sections.size(); ++k)
+            prm.leave_subsection();
+          const std::string info = info_of(e);
+          static const std::regex mismatch(R"(The string <(.*)> does not match the given pattern <(.*)>\.)");
+          std::smatch m;
+          if (std::regex_match(info, m, mismatch))
+            throw InputError(where + ": `" + value + "' is not allowed; allowed: " + m[2].str());
+          throw InputError(where + ": no entry `" + key + "' in subsection `" + sections.back() +
+                           "' (`servodrift params' lists every entry)");
+        }
+      for (std::size_t k = 0; k < sections.size(); ++k)
+        prm.leave_subsection();
+    }
+
+    void fill(ParameterHandler &prm, const std::string &input_file, const std::vector<std::string> &overrides)
+    {
+      declare_all(prm);
+      if (!input_file.empty())
+        read_input_file(prm, input_file);
+      for (const auto &o : overrides)
+        apply_override(prm, o);
+    }
+
+    /// The values as used, without the Output subsection, which changes no number.
+    std::string hashed_text(const ParameterHandler &prm)
+    {
+      std::ostringstream s;
+      prm.print_parameters(s, ParameterHandler::ShortPRM);
+      std::istringstream in(s.str());
+      std::string line, out;
+      bool in_output = false;
+      while (std::getline(in, line))
+        {
+          const std::string t = one_line(line);
+          if (t == std::string("subsection ") + OutputParameters::subsection)
+            in_output = true;
+          else if (in_output && t == "end" && line.find_first_not_of(' ') == 0)
+            in_output = false;
+          else if (!in_output)
+            out += line + "\n";
+        }
+      return out;
+    }
+
+    // ---- markdown parameter reference ---------------------------------------------------------
+    void markdown_rows(const boost::property_tree::ptree &tree, const std::string &path, std::ostream &out)
+    {
+      for (const auto &child : tree)
+        {
+          const auto &node = child.second;
+          if (node.get_child_optional("value"))
+            {
+              std::string doc = node.get<std::string>("documentation", "");
+              std::string unit;
+              const auto open = doc.rfind('[');
+              if (open != std::string::npos && doc.back() == ']')
+                {
+                  unit = doc.substr(open + 1, doc.size() - open - 2);
+                  doc = one_line(doc.substr(0, open));
+                }
+              std::string pattern = node.get<std::string>("pattern_description", "");
+              std::replace(pattern.begin(), pattern.end(), '|', '/');
+              out << "| `" << path << "` | `" << child.first << "` | `" << node.get<std::string>("default_value")
+                  << "` | " << unit << " | " << pattern << " | " << doc << " |\n";
+            }
+          else
+            markdown_rows(node, path.empty() ? child.first : path + "/" + child.first, out);
+        }
+    }
+
+    std::string demangle_json_key(std::string key)
+    {
+      // deal.II's JSON writer mangles spaces and some characters into _20 style escapes.
+      std::string out;
+      for (std::size_t k = 0; k < key.size(); ++k)
+        if (key[k] == '_' && k + 2 < key.size() && std::isxdigit(static_cast<unsigned char>(key[k + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(key[k + 2])))
+          {
+            out += static_cast<char>(std::stoi(key.substr(k + 1, 2), nullptr, 16));
+            k += 2;
+          }
+        else
+          out += key[k];
+      return out;
+    }
+
+    boost::property_tree::ptree demangled(const boost::property_tree::ptree &in)
+    {
+      boost::property_tree::ptree out(in.data());
+      for (const auto &child : in)
+        out.push_back({demangle_json_key(child.first), demangled(child.second)});
+      return out;
+    }
+  } // namespace
+
+  ValveDescription load_valve_description(const std::string &input_file, const std::vector<std::string> &overrides)
+  {
+    ParameterHandler prm;
+    fill(prm, input_file, overrides);
+    ValveDescription v;
+    parse_all(prm, v);
+    v.source = input_file.empty() ? "built-in RV-1" : input_file;
+    std::ostringstream s;
+    prm.print_parameters(s, ParameterHandler::PRM);
+    v.parameter_file = s.str();
+    v.parameters_sha256 = sha256_hex(hashed_text(prm));
+    validate(v);
+    return v;
+  }
+
+  std::string print_parameters(const std::string &input_file, const std::vector<std::string> &overrides,
+                               ParameterFormat format)
+  {
+    ParameterHandler prm;
+    fill(prm, input_file, overrides);
+    std::ostringstream s;
+    switch (format)
+      {
+        case ParameterFormat::prm:
+          prm.print_parameters(s, ParameterHandler::PRM);
+          break;
+        case ParameterFormat::json:
+          prm.print_parameters(s, ParameterHandler::JSON);
+          break;
+        case ParameterFormat::markdown:
+          {
+            std::ostringstream json;
+            prm.print_parameters(json, ParameterHandler::JSON);
+            std::istringstream in(json.str());
+            boost::property_tree::ptree tree;
+            boost::property_tree::read_json(in, tree);
+            s << "| subsection | entry | default (RV-1) | unit | allowed | meaning |\n"
+              << "|---|---|---|---|---|---|\n";
+            markdown_rows(demangled(tree), "", s);
+            break;
+          }
+      }
+    return s.str();
+  }
+
+  // ---- validation ----------------------------------------------------------------------------
+  namespace
+  {
+    [[noreturn]] void refuse(const std::string &entry, const std::string &what)
+    {
+      throw InputError("`" + entry + "' " + what);
+    }
+
+    void require_increasing(const std::vector<double> &list, const std::string &entry, double scale = 1.0)
+    {
+      for (std::size_t k = 1; k < list.size(); ++k)
+        if (!(list[k] > list[k - 1]))
+          refuse(entry, "must be strictly increasing, but " + format_number(list[k - 1] / scale) +
+                          " is followed by " + format_number(list[k] / scale));
+    }
+  } // namespace
+
+  void validate(const ValveDescription &v)
+  {
+    const auto &op = v.operating;
+    if (!(op.return_pressure < op.supply_pressure))
+      refuse("Operating conditions/Return pressure",
+             "= " + format_number(op.return_pressure) + " Pa must be below the supply pressure " +
+               format_number(op.supply_pressure) + " Pa");
+
+    // Sweep lists
+    const auto &sw = v.sweeps;
+    require_increasing(sw.table_temperatures, "Sweeps/Table temperatures");
+    require_increasing(sw.motor_angles, "Sweeps/Motor angles", units::degree);
+    require_increasing(sw.motor_currents, "Sweeps/Motor currents");
+    require_increasing(sw.pressure_fractions, "Sweeps/Pressure fractions");
+    require_increasing(sw.gap_fractions, "Sweeps/Gap fractions");
+    require_increasing(sw.drift_temperatures, "Sweeps/Drift temperatures");
+    require_increasing(sw.deviation_angles, "Sweeps/Deviation angles", units::degree);
+
+    // Temperatures inside the oil law's window (E16 is singular at T = -C)
+    const auto &fl = v.fluid;
+    if (!(fl.minimum_temperature < fl.maximum_temperature))
+      refuse("Fluid/Minimum temperature", "= " + format_number(fl.minimum_temperature) +
+                                            " degC must be below `Fluid/Maximum temperature' = " +
+                                            format_number(fl.maximum_temperature) + " degC");
+    if (fl.viscosity_law == FluidParameters::ViscosityLaw::vogel && !(fl.minimum_temperature > -fl.vogel_c))
+      refuse("Fluid/Minimum temperature", "= " + format_number(fl.minimum_temperature) +
+                                            " degC must be above -`Fluid/Vogel C' = " +
+                                            format_number(-fl.vogel_c) + " degC, where E16 is singular");
+    auto check_window = [&](const std::vector<double> &list, const std::string &entry) {
+      for (double T : list)
+        if (!(T >= fl.minimum_temperature && T <= fl.maximum_temperature))
+          refuse(entry, "contains " + format_number(T) + " degC, outside the oil viscosity law's window [" +
+                          format_number(fl.minimum_temperature) + ", " + format_number(fl.maximum_temperature) +
+                          "] degC (`Fluid/Minimum temperature', `Fluid/Maximum temperature')");
+    };
+    check_window(sw.table_temperatures, "Sweeps/Table temperatures");
+    check_window(sw.drift_temperatures, "Sweeps/Drift temperatures");
+    check_window({op.reference_temperature}, "Operating conditions/Reference temperature");
+    const double T_lo = sw.table_temperatures.front(), T_hi = sw.table_temperatures.back();
+    auto check_in_tables = [&](double T, const std::string &entry) {
+      if (!(T >= T_lo && T <= T_hi))
+        refuse(entry, "contains " + format_number(T) + " degC, outside the table temperatures [" +
+                        format_number(T_lo) + ", " + format_number(T_hi) + "] degC (`Sweeps/Table temperatures')");
+    };
+    for (double T : sw.drift_temperatures)
+      check_in_tables(T, "Sweeps/Drift temperatures");
+    check_in_tables(op.reference_temperature, "Operating conditions/Reference temperature");
+
+    // Torque motor: gaps open at every temperature and every tabulated angle (E2, E6, E7)
+    const auto &tm = v.torque_motor;
+    if (!(tm.pivot_to_pole_distance > 0 && tm.pole_face_width > 0 && tm.pole_face_length > 0 &&
+          tm.magnet_length > 0 && tm.magnet_width > 0 && tm.magnet_depth > 0))
+      refuse("Torque motor", "dimensions (pivot distance, pole face, magnet) must all be > 0");
+    double max_angle = 0;
+    for (double a : sw.motor_angles)
+      max_angle = std::max(max_angle, std::abs(a));
+    for (double T : sw.table_temperatures)
+      {
+        const auto g = laws::torque_motor_geometry(tm, v.expansion, T, op.reference_temperature);
+        if (!(g.lower_gap > 0))
+          refuse("Torque motor/Armature height",
+                 "gives a closed lower gap g_12 = H_a - H_ar/2 - H_c = " + format_number(g.lower_gap) + " m at " +
+                   format_number(T) + " degC (E6); it must be > 0");
+        if (!(g.upper_gap > 0))
+          refuse("Torque motor/Armature height",
+                 "gives a closed upper gap g_34 = H_c' + H_m - h_p - H_a - H_ar/2 = " + format_number(g.upper_gap) +
+                   " m at " + format_number(T) + " degC (E7); it must be > 0");
+        const double closing = g.pivot_to_pole_distance * max_angle;
+        const double gap = std::min(g.lower_gap, g.upper_gap);
+        if (!(closing < 0.95 * gap))
+          refuse("Sweeps/Motor angles",
+                 "reach " + format_number(max_angle / units::degree) + " deg, where the armature tip moves " +
+                   format_number(closing) + " m of a " + format_number(gap) + " m gap at " + format_number(T) +
+                   " degC; keep |angle| below " + format_number(0.95 * gap / g.pivot_to_pole_distance / units::degree) +
+                   " deg");
+      }
+    if (!(sw.motor_angles.front() <= -0.1 * units::degree && sw.motor_angles.back() >= 0.1 * units::degree))
+      refuse("Sweeps/Motor angles", "must cover -0.1..0.1 deg, where the secant K_m is evaluated (C1)");
+    const double i_rated = op.rated_current;
+    if (!(sw.motor_currents.front() <= -i_rated && sw.motor_currents.back() >= i_rated))
+      refuse("Sweeps/Motor currents", "must cover -rated..rated current, +-" + format_number(i_rated) + " A");
+
+    // Spring tube
+    const auto &st = v.spring_tube;
+    if (!(st.outer_diameter > 0 && st.length > 0))
+      refuse("Spring tube/Outer diameter", "and `Spring tube/Length' must be > 0");
+    if (!(st.inner_diameter < st.outer_diameter))
+      refuse("Spring tube/Inner diameter", "= " + format_number(st.inner_diameter) +
+                                             " m must be below the outer diameter " +
+                                             format_number(st.outer_diameter) + " m (wall thickness > 0)");
+    for (double T : sw.table_temperatures)
+      if (!(laws::youngs_modulus(st, T) > 0))
+        refuse("Spring tube/Modulus temperature coefficient", "makes E(T) <= 0 at " + format_number(T) + " degC (E12)");
+
+    // Pilot stage
+    const auto &ps = v.pilot;
+    if (!(ps.fixed_orifice_diameter > 0 && ps.fixed_orifice_length > 0 && ps.nozzle_diameter > 0))
+      refuse("Pilot stage", "orifice and nozzle dimensions must be > 0");
+    if (!(ps.null_gap > 0))
+      refuse("Pilot stage/Null gap", "= " + format_number(ps.null_gap) + " m must be > 0");
+    if (!(ps.null_gap <= 0.25 * ps.nozzle_diameter))
+      refuse("Pilot stage/Null gap", "= " + format_number(ps.null_gap) +
+                                       " m must not exceed a quarter of the nozzle diameter, D_N/4 = " +
+                                       format_number(0.25 * ps.nozzle_diameter) +
+                                       " m, or the nozzle bore instead of the curtain throttles (E32)");
+    if (!(ps.land_diameter > ps.nozzle_diameter))
+      refuse("Pilot stage/Land diameter", "= " + format_number(ps.land_diameter) +
+                                            " m must be above the nozzle diameter " +
+                                            format_number(ps.nozzle_diameter) + " m (E22)");
+    if (!(ps.nozzle_discharge_coefficient > 0))
+      refuse("Pilot stage/Nozzle discharge coefficient", "must be > 0");
+    for (double T : sw.table_temperatures)
+      {
+        const auto g = laws::pilot_stage_geometry(ps, v.armature, v.expansion, T, op.reference_temperature);
+        if (!(g.null_gap > 0))
+          refuse("Pilot stage/Nozzle seat span", "makes the null gap close at " + format_number(T) + " degC (2.3)");
+      }
+    if (!(v.armature.pivot_to_nozzle_distance > 0))
+      refuse("Armature/Pivot to nozzle distance", "must be > 0");
+
+    // Spool
+    const auto &sp = v.spool;
+    if (!(sp.control_diameter > 0 && sp.feedback_diameter > 0))
+      refuse("Spool/Control diameter", "and `Spool/Feedback diameter' must be > 0");
+    if (!(sp.overlap > 0))
+      refuse("Spool/Overlap", "= " + format_number(sp.overlap) +
+                                " m must be > 0: a critically lapped spool has no unique blocked-port steady "
+                                "state in this model");
+    if (!(sp.stroke_limit > sp.overlap))
+      refuse("Spool/Stroke limit", "= " + format_number(sp.stroke_limit) + " m must exceed the overlap " +
+                                     format_number(sp.overlap) + " m");
+
+    // Offsets (C8): re-nulling with the hydraulic null removes a hydraulic-null deviation exactly
+    if (v.offsets.deviation_target == OffsetParameters::Target::hydraulic_null &&
+        v.offsets.nulling == OffsetParameters::Nulling::nulled_at_reference)
+      refuse("Offsets/Deviation target", "= hydraulic-null with `Offsets/Nulling' = nulled-at-reference gives zero "
+                                         "drift by construction (C8); use as-assembled or another target");
+  }
+} // namespace servodrift

@@ -1,0 +1,63 @@
+#pragma once
+// The valve description: every parameter of the valve, of the sweeps and of the output, declared
+// through deal.II's ParameterHandler in one subsection per part (model.md section 2, decisions of
+// section 0). Defaults are the built-in valve RV-1, so no input file is needed.
+#include "common/parameters/armature.h"
+#include "common/parameters/fits.h"
+#include "common/parameters/fluid.h"
+#include "common/parameters/offsets.h"
+#include "common/parameters/operating_conditions.h"
+#include "common/parameters/output.h"
+#include "common/parameters/pilot_stage.h"
+#include "common/parameters/spool.h"
+#include "common/parameters/spring_tube.h"
+#include "common/parameters/sweeps.h"
+#include "common/parameters/thermal_expansion.h"
+#include "common/parameters/torque_motor.h"
+
+#include <string>
+#include <vector>
+
+namespace servodrift
+{
+  struct ValveDescription
+  {
+    OperatingConditions operating;
+    TorqueMotorParameters torque_motor;
+    ThermalExpansion expansion;
+    SpringTubeParameters spring_tube;
+    ArmatureParameters armature;
+    PilotStageParameters pilot;
+    SpoolParameters spool;
+    FluidParameters fluid;
+    OffsetParameters offsets;
+    SweepParameters sweeps;
+    FitParameters fits;
+    OutputParameters output;
+
+    std::string source;            ///< the input file, or "built-in RV-1"
+    std::string parameter_file;    ///< the complete, documented parameter file as used (PRM)
+    std::string parameters_sha256; ///< sha256 of the values as used, without the Output subsection
+  };
+
+  enum class ParameterFormat
+  {
+    prm,      ///< deal.II PRM with documentation: the format of examples/rv1.prm
+    json,     ///< deal.II JSON, readable again as input
+    markdown, ///< the parameter reference of doc/parameters.md
+  };
+
+  /// Defaults (RV-1), then the input file if any (.prm or .json), then each override
+  /// "Subsection/Key=value" in order; then validate(). Throws InputError with a one-line message
+  /// naming the file or override, the entry and the allowed range.
+  ValveDescription load_valve_description(const std::string &input_file = "",
+                                          const std::vector<std::string> &overrides = {});
+
+  /// The complete documented parameter file with the values of the input file and overrides.
+  std::string print_parameters(const std::string &input_file, const std::vector<std::string> &overrides,
+                               ParameterFormat format);
+
+  /// Checks that go beyond one entry's range (p_r < p_s, d < D, x0 <= D_N/4, positive torque-motor
+  /// gaps at every temperature, temperatures inside the oil law's window, ...). Throws InputError.
+  void validate(const ValveDescription &valve);
+} // namespace servodrift
