@@ -1,5 +1,6 @@
 #include "common/table.h"
 
+#include "common/csv.h"
 #include "common/error.h"
 #include "common/output_files.h"
 
@@ -76,33 +77,27 @@ namespace servodrift
 
   std::string Table::to_csv() const
   {
-    std::ostringstream s;
-    s << "# servodrift-table " << table_schema->name << "\n"
-      << "# schema " << table_schema->version << "\n"
-      << "# producer " << producer << "\n"
-      << "# parameters-sha256 " << parameters_sha256 << "\n"
-      << "# rows " << rows.size() << "\n"
-      << "# columns";
+    CsvDocument doc;
+    doc.comments = {"servodrift-table " + table_schema->name, "schema " + std::to_string(table_schema->version),
+                    "producer " + producer, "parameters-sha256 " + parameters_sha256,
+                    "rows " + std::to_string(rows.size())};
     for (const auto &c : table_schema->columns)
-      s << ' ' << c.header();
-    s << "\n";
-    for (std::size_t k = 0; k < table_schema->columns.size(); ++k)
-      s << (k ? "," : "") << table_schema->columns[k].header();
-    s << "\n";
+      doc.columns.push_back(c.header());
     for (const auto &r : rows)
       {
         if (r.size() != table_schema->columns.size())
           throw std::logic_error("table " + table_schema->name + ": row of wrong length");
+        std::vector<std::string> cells;
         for (std::size_t k = 0; k < r.size(); ++k)
           {
             if (!std::isfinite(r[k]))
               throw std::logic_error("table " + table_schema->name + ": non-finite value in column " +
                                      table_schema->columns[k].name);
-            s << (k ? "," : "") << format_cell(r[k]);
+            cells.push_back(format_cell(r[k]));
           }
-        s << "\n";
+        doc.rows.push_back(std::move(cells));
       }
-    return s.str();
+    return doc.text();
   }
 
   void Table::write(const std::string &path) const

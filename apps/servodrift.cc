@@ -1,0 +1,175 @@
+// servodrift: the command line. Subcommands only, no physics: each calls one module's run().
+#include "common/error.h"
+#include "common/output_files.h"
+#include "common/stage_output.h"
+#include "common/sweep.h"
+#include "common/valve_description.h"
+#include "common/version.h"
+#include "flow/pilot_stage.h"
+#include "magnetics/torque_motor_stage.h"
+#include "structure/spring_tube_stage.h"
+#include "system/system_stage.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <iostream>
+
+namespace
+{
+  using namespace servodrift;
+
+  struct Options
+  {
+    std::string input;
+    std::vector<std::string> overrides;
+    std::string output;
+    std::string format = "prm";
+  };
+
+  void add_common_options(CLI::App *command, Options &o)
+  {
+    command->add_option("input", o.input, "valve description (.prm or .json); default: the built-in RV-1");
+    command->add_option("--set", o.overrides, "override one entry, \"Subsection/Key=value\" (repeatable)")
+      ->take_all();
+    command->add_option("-o,--output", o.output, "output directory (overrides Output/Directory)");
+  }
+
+  ValveDescription load(const Options &o)
+  {
+    std::vector<std::string> overrides = o.overrides;
+    if (!o.output.empty())
+      overrides.push_back("Output/Directory=" + o.output);
+    return load_valve_description(o.input, overrides);
+  }
+
+  void say(const std::string &line)
+  {
+    if (mpi_rank() == 0)
+      std::cout << line << std::endl;
+  }
+
+  /// Runs one step with its wall time on stdout.
+  template <typename Step>
+  void timed(const std::string &name, Step &&step)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    step();
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    char buffer[32];
+    std::snprintf(buffer, sizeof(buffer), "%.2f s", s);
+    say("  " + name + ": " + buffer);
+  }
+
+  ValveDescription prepare(const Options &o)
+  {
+    say(producer_string("on " + std::to_string(mpi_size()) + (mpi_size() == 1 ? " rank" : " ranks")));
+    ValveDescription valve = load(o);
+    say("valve description: " + valve.source + ", output: " + valve.output.directory + "/");
+    if (mpi_rank() == 0)
+      {
+        prepare_output_directory(valve.output.directory);
+        write_parameters_file(valve);
+      }
+    mpi_barrier();
+    return valve;
+  }
+
+  int run_main(int argc, char **argv)
+  {
+    CLI::App app{"servodrift: thermal drift of the operating point of a double-nozzle-flapper pressure servo valve, "
+                 "from first principles (torque motor, pilot stage, spring tube, whole valve)."};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", producer_string(""));
+    Options o;
+
+    auto *run = app.add_subcommand("run", "all stages -> tables -> fits -> drift maps -> report.md");
+    auto *params = app.add_subcommand("params", "print the complete documented parameter file");
+    auto *magnetics = app.add_subcommand("magnetics", "torque-motor stage alone: tables/torque_motor.csv");
+    auto *structure = app.add_subcommand("structure", "spring-tube stage alone: tables/spring_tube.csv");
+    auto *flow = app.add_subcommand("flow", "pilot-stage flow alone: tables/fixed_orifice.csv, tables/nozzle_flapper.csv");
+    auto *system = app.add_subcommand("system", "system model alone, from the tables already in <output>/tables");
+    for (auto *c : {run, magnetics, structure, flow, system})
+      add_common_options(c, o);
+    params->add_option("input", o.input, "valve description (.prm or .json); default: the built-in RV-1");
+    params->add_option("--set", o.overrides, "override one entry, \"Subsection/Key=value\" (repeatable)")->take_all();
+    params->add_option("--format", o.format, "prm (default), json or markdown")
+      ->check(CLI::IsMember({"prm", "json", "markdown"}));
+
+    try
+      {
+        app.parse(argc, argv);
+      }
+    catch (const CLI::ParseError &e)
+      {
+        if (mpi_rank() == 0)
+          return app.exit(e); // usage errors: exit code 2 (help and version: 0)
+        return e.get_exit_code() == 0 ? 0 : 2;
+      }
+
+    if (params->parsed())
+      {
+        const ParameterFormat format = o.format == "json"     ? ParameterFormat::json :
+                                       o.format == "markdown" ? ParameterFormat::markdown :
+                                                                ParameterFormat::prm;
+        const std::string text = print_parameters(o.input, o.overrides, format);
+        load_valve_description(o.input, o.overrides); // refuse what would not run
+        if (mpi_rank() == 0)
+          std::cout << text;
+        return 0;
+      }
+
+    const ValveDescription valve = prepare(o);
+    if (run->parsed())
+      {
+        timed("magnetics (" + valve.torque_motor.model_level + ")", [&] { magnetics::run(valve); });
+        timed("structure (" + valve.spring_tube.model_level + ")", [&] { structure::run(valve); });
+        timed("flow (" + valve.pilot.model_level + ")", [&] { flow::run(valve); });
+        timed("system: fits, drift maps, plots, report", [&] { system::run(valve); });
+        say("results: " + valve.output.directory + "/report.md, " + valve.output.directory + "/tables/, " +
+            valve.output.directory + "/system/");
+      }
+    else if (magnetics->parsed() || structure->parsed() || flow->parsed())
+      {
+        if (magnetics->parsed())
+          timed("magnetics (" + valve.torque_motor.model_level + ")", [&] { magnetics::run(valve); });
+        if (structure->parsed())
+          timed("structure (" + valve.spring_tube.model_level + ")", [&] { structure::run(valve); });
+        if (flow->parsed())
+          timed("flow (" + valve.pilot.model_level + ")", [&] { flow::run(valve); });
+        write_fits(valve);
+        say("results: " + tables_directory(valve) + "/");
+      }
+    else if (system->parsed())
+      {
+        timed("system: fits, drift maps, plots, report", [&] { system::run(valve); });
+        say("results: " + valve.output.directory + "/report.md, " + valve.output.directory + "/system/");
+      }
+    return 0;
+  }
+
+  std::string one_line(std::string s)
+  {
+    for (char &c : s)
+      if (c == '\n' || c == '\r' || c == '\t')
+        c = ' ';
+    return s;
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  try
+    {
+      return run_main(argc, argv);
+    }
+  catch (const std::exception &e)
+    {
+      if (servodrift::mpi_rank() == 0)
+        std::cerr << "servodrift: error: " << one_line(e.what()) << std::endl;
+      return 1;
+    }
+}

@@ -1,0 +1,17 @@
+#pragma once
+// CSV text with a '#' comment header: the format of the coefficient tables and of every CSV output.
+#include <string>
+#include <vector>
+
+namespace servodrift
+{
+  struct CsvDocument
+  {
+    std::vector<std::string> comments;          ///< header lines, written as "# <line>"
+    std::vector<std::string> columns;           ///< "name[unit]"
+    std::vector<std::vector<std::string>> rows; ///< cells; an empty cell means "not defined"
+
+    /// The comments, a "# columns ..." line, the column header row and the rows.
+    std::string text() const;
+  };
+} // namespace servodrift

@@ -1,0 +1,106 @@
+#include "flow/pilot_closed_forms.h"
+
+#include "common/pilot_bridge.h"
+#include "common/units.h"
+#include "flow/paper_fits.h"
+
+#include <cmath>
+
+namespace servodrift::flow
+{
+  using units::pi;
+
+  PilotClosedForms::PilotClosedForms(const ValveDescription &valve, double temperature)
+    : pilot(valve.pilot)
+    , g(laws::pilot_stage_geometry(valve.pilot, valve.armature, valve.expansion, temperature,
+                                   valve.operating.reference_temperature))
+    , T(temperature)
+  {
+    const laws::Oil oil(valve.fluid, valve.operating.reference_temperature);
+    rho = oil.density(T).value;
+    nu = oil.kinematic_viscosity(T).value;
+    mu = rho * nu;
+
+    if (pilot.flapper_force_law == PilotStageParameters::FlapperForceLaw::paper_table)
+      {
+        // Scale E23 so that the blocked-bridge flow-force stiffness at null equals the paper's K_f(T):
+        // K_f,E23 by central differences of the bridge with the momentum force (1.10, 4.2).
+        const double p_s = valve.operating.supply_pressure, p_r = valve.operating.return_pressure;
+        const double dx = 1e-3 * g.null_gap;
+        auto force = [&](double gap) {
+          const double p = bridge_pressure([&](double dp0) { return fixed_orifice(dp0).flow_rate; },
+                                           [&](double dpn) { return momentum_nozzle(gap, dpn).flow_rate; }, p_s, p_r);
+          return momentum_nozzle(gap, p - p_r).flapper_force;
+        };
+        const double K_f_momentum = (force(g.null_gap - dx) - force(g.null_gap + dx)) / (2 * dx);
+        const auto K_f_paper = paper::flow_force_stiffness(T);
+        force_scale = K_f_paper.value / K_f_momentum;
+        force_clamped = K_f_paper.clamped;
+      }
+  }
+
+  OrificeState PilotClosedForms::fixed_orifice(double dp) const
+  {
+    OrificeState s;
+    const double D0 = g.fixed_orifice_diameter, A0 = 0.25 * pi * D0 * D0;
+    const double ideal_velocity = std::sqrt(2 * dp / rho);
+    s.reynolds_number = D0 * ideal_velocity / nu; // E17: on the ideal velocity
+    if (pilot.fixed_orifice_law == PilotStageParameters::OrificeLaw::lichtarowicz)
+      {
+        // E21 (Lichtarowicz, Duggins & Markland): 1/C_d = 1/C_du + 20 (1 + 2.25 l/d)/Re
+        const double l_over_d = g.fixed_orifice_length / D0;
+        const double C_du = 0.827 - 0.0085 * l_over_d;
+        s.discharge_coefficient =
+          s.reynolds_number > 0 ? 1.0 / (1.0 / C_du + 20.0 * (1.0 + 2.25 * l_over_d) / s.reynolds_number) : 0.0;
+      }
+    else
+      {
+        const auto c = paper::fixed_orifice_discharge_coefficient(s.reynolds_number); // E26, C6
+        s.discharge_coefficient = c.value;
+        s.clamped = c.clamped;
+      }
+    s.flow_rate = s.discharge_coefficient * A0 * ideal_velocity; // E31
+    return s;
+  }
+
+  OrificeState PilotClosedForms::momentum_nozzle(double h, double dp) const
+  {
+    OrificeState s;
+    const double DN = g.nozzle_diameter, AN = 0.25 * pi * DN * DN;
+    const double curtain = pi * DN * h; // curtain area of the gap
+    const double ideal_velocity = std::sqrt(2 * dp / rho);
+    if (pilot.nozzle_law == PilotStageParameters::NozzleLaw::curtain)
+      {
+        if (h > 0 && dp > 0)
+          {
+            // E22: dp = rho Q^2/(2 (C_dinf pi D_N h)^2) + 6 mu ln(D_land/D_N) Q/(pi h^3), solved for Q
+            const double a = rho / (2 * std::pow(pilot.nozzle_discharge_coefficient * curtain, 2));
+            const double b = 6 * mu * std::log(g.land_diameter / DN) / (pi * h * h * h);
+            s.flow_rate = 2 * dp / (b + std::sqrt(b * b + 4 * a * dp)); // the positive root, without cancellation
+            s.discharge_coefficient = s.flow_rate / (curtain * ideal_velocity);
+          }
+        // a closed gap or no pressure difference: no flow, and C_dn -> 0 in the laminar limit
+      }
+    else
+      {
+        const auto c = paper::nozzle_discharge_coefficient(T); // E27 T-part
+        s.discharge_coefficient = c.value;
+        s.clamped = c.clamped;
+        s.flow_rate = c.value * curtain * ideal_velocity; // E32
+      }
+    // E18: Re_n = D_h C_dn sqrt(2 dp/rho)/nu with the slot hydraulic diameter D_h = 2 pi D_N h/(pi D_N + h)
+    const double D_h = 2 * pi * DN * h / (pi * DN + h);
+    s.reynolds_number = D_h * s.discharge_coefficient * ideal_velocity / nu;
+    // E23: bore pressure on the nozzle projection plus the momentum of the jet turned radial
+    s.flapper_force = dp * AN + rho * s.flow_rate * s.flow_rate / AN;
+    return s;
+  }
+
+  OrificeState PilotClosedForms::nozzle(double h, double dp) const
+  {
+    OrificeState s = momentum_nozzle(h, dp);
+    s.flapper_force *= force_scale;
+    s.clamped = s.clamped || force_clamped;
+    return s;
+  }
+} // namespace servodrift::flow

@@ -1,0 +1,41 @@
+#pragma once
+// Reduced-order level of the pilot stage (model.md 1.8-1.10): fixed orifice (E17, E21), nozzle
+// curtain (E18, E22) and flapper force (E23), at one temperature; or the paper's fits (D2).
+#include "common/thermal_laws.h"
+#include "common/valve_description.h"
+
+namespace servodrift::flow
+{
+  struct OrificeState
+  {
+    double flow_rate;             ///< Q [m^3/s]
+    double discharge_coefficient; ///< C_d = Q/(A sqrt(2 dp/rho)) [1]
+    double reynolds_number;       ///< as in E17 (fixed orifice) or E18 (nozzle) [1]
+    double flapper_force = 0;     ///< nozzle only: force of the jet on the flapper (E23) [N]
+    bool clamped = false;         ///< a law was clamped to its validity window (C6)
+  };
+
+  class PilotClosedForms
+  {
+  public:
+    PilotClosedForms(const ValveDescription &valve, double temperature);
+
+    /// Fixed orifice at pressure difference dp = p_upstream - p_downstream >= 0 [Pa].
+    OrificeState fixed_orifice(double pressure_difference) const;
+    /// Nozzle-flapper gap h >= 0 [m] at dp = p_c - p_r >= 0 [Pa].
+    OrificeState nozzle(double gap, double pressure_difference) const;
+
+    double density() const { return rho; }
+    double kinematic_viscosity() const { return nu; }
+    const laws::PilotStageGeometry &geometry() const { return g; }
+
+  private:
+    PilotStageParameters pilot;
+    laws::PilotStageGeometry g;
+    double T, rho, nu, mu;
+    double force_scale = 1;     ///< paper-table flapper force: K_f,paper(T)/K_f,E23(T)
+    bool force_clamped = false;
+
+    OrificeState momentum_nozzle(double gap, double dp) const;
+  };
+} // namespace servodrift::flow

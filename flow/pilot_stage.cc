@@ -1,0 +1,77 @@
+#include "flow/pilot_stage.h"
+
+#include "common/stage_output.h"
+#include "common/sweep.h"
+#include "flow/pilot_closed_forms.h"
+
+namespace servodrift::flow
+{
+  namespace
+  {
+    std::vector<double> pressure_differences(const ValveDescription &valve)
+    {
+      std::vector<double> dp;
+      const double span = valve.operating.supply_pressure - valve.operating.return_pressure;
+      for (double f : valve.sweeps.pressure_fractions)
+        dp.push_back(f * span);
+      return dp;
+    }
+  } // namespace
+
+  Table compute_fixed_orifice_table(const ValveDescription &valve)
+  {
+    const auto &T = valve.sweeps.table_temperatures;
+    const auto dp = pressure_differences(valve);
+    Table table(schemas::fixed_orifice);
+    table.rows = run_sweep(
+      "flow: fixed orifice", T.size(),
+      [&](std::size_t k) {
+        const PilotClosedForms pilot(valve, T[k]);
+        CaseRows rows;
+        for (double p : dp)
+          {
+            const auto s = pilot.fixed_orifice(p);
+            rows.push_back({T[k], p, s.flow_rate, s.discharge_coefficient, s.reynolds_number,
+                            s.clamped ? flags::clamped : flags::computed});
+          }
+        return rows;
+      },
+      valve.output.progress);
+    return table;
+  }
+
+  Table compute_nozzle_flapper_table(const ValveDescription &valve)
+  {
+    const auto &T = valve.sweeps.table_temperatures;
+    const auto dp = pressure_differences(valve);
+    std::vector<double> gaps;
+    for (double f : valve.sweeps.gap_fractions)
+      gaps.push_back(f * valve.pilot.null_gap);
+    Table table(schemas::nozzle_flapper);
+    table.rows = run_sweep(
+      "flow: nozzle-flapper", T.size() * gaps.size(),
+      [&](std::size_t k) {
+        const double temperature = T[k / gaps.size()], h = gaps[k % gaps.size()];
+        const PilotClosedForms pilot(valve, temperature);
+        CaseRows rows;
+        for (double p : dp)
+          {
+            const auto s = pilot.nozzle(h, p);
+            rows.push_back({temperature, h, p, s.flow_rate, s.discharge_coefficient, s.reynolds_number,
+                            s.flapper_force, s.clamped ? flags::clamped : flags::computed});
+          }
+        return rows;
+      },
+      valve.output.progress);
+    return table;
+  }
+
+  void run(const ValveDescription &valve)
+  {
+    const std::string producer = "flow/" + valve.pilot.model_level;
+    Table orifice = compute_fixed_orifice_table(valve);
+    write_table(valve, orifice, producer);
+    Table nozzle = compute_nozzle_flapper_table(valve);
+    write_table(valve, nozzle, producer);
+  }
+} // namespace servodrift::flow

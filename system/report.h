@@ -1,0 +1,14 @@
+#pragma once
+// report.md: the stage coefficients, operating points and drift maps of a run beside model.md's
+// RV-1 values and the paper's numbers (model.md sections 2 and 3).
+#include "common/valve_description.h"
+#include "system/plots.h"
+
+#include <string>
+
+namespace servodrift::system
+{
+  struct SystemResults;
+  void write_report(const ValveDescription &valve, const SystemResults &results, const PlotFiles &plots,
+                    const std::string &path);
+} // namespace servodrift::system

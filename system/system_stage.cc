@@ -1,0 +1,160 @@
+#include "system/system_stage.h"
+
+#include "common/csv.h"
+#include "common/error.h"
+#include "common/output_files.h"
+#include "common/stage_output.h"
+#include "common/sweep.h"
+#include "common/units.h"
+#include "common/version.h"
+#include "system/plots.h"
+#include "system/report.h"
+
+#include <iostream>
+
+namespace servodrift::system
+{
+  SystemResults compute(const ValveDescription &valve, const std::string &tables_directory)
+  {
+    const StageTables tables = StageTables::read(tables_directory, valve);
+    const ValveModel model(valve, tables);
+    SystemResults results;
+    results.warnings = tables.warnings;
+    for (const Table *t : {&tables.torque_motor, &tables.spring_tube, &tables.fixed_orifice, &tables.nozzle_flapper})
+      results.table_producers.push_back(t->name() + ": " + t->producer);
+    for (double T : valve.sweeps.drift_temperatures)
+      results.coefficients.push_back(stage_coefficients(model, T));
+    results.drift_map = compute_drift_map(model, valve.output.progress);
+
+    // E28: dF_f = K_f(T) x_f with K_f(T) = c1 T^4 + c2 T^3 + c3 T^2 + c4 T + c5
+    std::vector<std::vector<double>> T;
+    std::vector<double> K;
+    for (const auto &c : results.coefficients)
+      {
+        T.push_back({c.temperature});
+        K.push_back(c.flow_force_stiffness);
+      }
+    const unsigned int degree = std::min<std::size_t>(4, T.size() - 1);
+    std::vector<std::vector<unsigned int>> powers;
+    for (unsigned int p = 0; p <= degree; ++p)
+      powers.push_back({p});
+    results.flow_force_fit = fit_polynomial(T, K, powers);
+    results.flow_force_fit.name = "E28 flow-force stiffness K_f(T), quartic";
+    results.flow_force_fit.source = "system model: blocked bridge at null from fixed_orifice.csv and nozzle_flapper.csv";
+    results.flow_force_fit.response = "K_f[N/m]";
+    results.flow_force_fit.variables = {"temperature[degC]"};
+    results.flow_force_fit.note = "K_f = d(F_L - F_R)/dx_f at x_f = 0 at the drift temperatures; paper: c = (1.1e-2, "
+                                  "-4.09, 547, -3.158e4, 6.823e5) for T^4 .. 1 (its c1 is unusable above 90 degC)";
+    return results;
+  }
+
+  namespace
+  {
+    std::string cell(double v)
+    {
+      return format_cell(v);
+    }
+
+    std::vector<std::string> header_comments(const ValveDescription &valve, const std::string &name,
+                                             const std::string &what)
+    {
+      return {"servodrift-output " + name, what, "producer " + producer_string("system"),
+              "parameters-sha256 " + valve.parameters_sha256};
+    }
+
+    void write_stage_coefficients(const ValveDescription &valve, const SystemResults &r, const std::string &dir)
+    {
+      CsvDocument doc;
+      doc.comments = header_comments(valve, "stage_coefficients",
+                                     "lumped coefficients read off the tables; K_m secant = T(0.1 deg, 0)/0.1 deg (C1)");
+      doc.columns = {"temperature[degC]", "torque_at_0.1deg[N*m]", "magnetic_spring_secant[N*m/rad]",
+                     "magnetic_spring[N*m/rad]", "torque_constant[N*m/A]", "spring_stiffness[N*m/rad]",
+                     "flow_force_stiffness[N/m]", "null_control_pressure[Pa]", "orifice_discharge_coefficient[1]",
+                     "nozzle_discharge_coefficient[1]", "quiescent_flow[m^3/s]", "force_difference_10um[N]",
+                     "net_stiffness[N*m/rad]"};
+      for (const auto &c : r.coefficients)
+        doc.rows.push_back({cell(c.temperature), cell(c.motor.torque_at_tenth_degree), cell(c.motor.secant_magnetic_spring),
+                            cell(c.motor.magnetic_spring), cell(c.motor.torque_constant), cell(c.spring_stiffness),
+                            cell(c.flow_force_stiffness), cell(c.null_control_pressure), cell(c.orifice_discharge),
+                            cell(c.nozzle_discharge), cell(c.quiescent_flow), cell(c.force_difference_10um),
+                            cell(c.net_stiffness)});
+      write_file_atomically(dir + "/stage_coefficients.csv", doc.text());
+    }
+
+    void write_operating_points(const ValveDescription &valve, const SystemResults &r, const std::string &dir)
+    {
+      CsvDocument doc;
+      doc.comments = header_comments(valve, "operating_points",
+                                     "static operating points of the valve without deviation (theta_d = 0), blocked brake port");
+      doc.columns = {"temperature[degC]", "current[A]", "angle[rad]", "flapper_displacement[m]", "left_pressure[Pa]",
+                     "right_pressure[Pa]", "control_pressure_difference[Pa]", "left_flow[m^3/s]", "right_flow[m^3/s]",
+                     "left_force[N]", "right_force[N]", "spool_displacement[m]", "brake_pressure[Pa]",
+                     "flapper_state[-]", "spool_state[-]"};
+      const auto &m = r.drift_map;
+      for (std::size_t t = 0; t < m.temperatures.size(); ++t)
+        for (std::size_t a = 0; a < m.deviation_angles.size(); ++a)
+          if (m.deviation_angles[a] == 0.0)
+            for (const OperatingPoint *o : {&m.at(t, a).zero_current, &m.at(t, a).rated_current})
+              {
+                const auto &b = o->bridge;
+                doc.rows.push_back({cell(o->temperature), cell(o->current), cell(o->angle), cell(o->flapper_displacement),
+                                    cell(b.left_pressure), cell(b.right_pressure), cell(o->control_pressure_difference()),
+                                    cell(b.left_flow), cell(b.right_flow), cell(b.left_force), cell(b.right_force),
+                                    cell(o->spool.displacement), cell(o->spool.brake_pressure), to_string(o->flapper),
+                                    to_string(o->spool.state)});
+              }
+      write_file_atomically(dir + "/operating_points.csv", doc.text());
+    }
+
+    void write_drift_map(const ValveDescription &valve, const SystemResults &r, const std::string &dir)
+    {
+      const auto &m = r.drift_map;
+      CsvDocument doc;
+      doc.comments = header_comments(
+        valve, "drift_map",
+        std::string("drift map (D9, E40), convention ") + (m.nulled_at_reference ? "nulled-at-reference" : "as-assembled") +
+          "; deviations relative to " + (m.nulled_at_reference ? "the same valve at T0" : "theta_d = 0 at the same T") +
+          "; spool at i = 0, brake pressure at the rated current; an empty null-shift current lies beyond the "
+          "torque_motor table's currents");
+      doc.columns = {"temperature[degC]", "deviation_angle[deg]", "spool_displacement[m]",
+                     "spool_displacement_deviation[m]", "spool_displacement_deviation_slope[m/degC]", "brake_pressure[Pa]",
+                     "brake_pressure_deviation[Pa]", "brake_pressure_deviation_slope[Pa/degC]",
+                     "brake_pressure_deviation_own_drift_removed[Pa]", "null_pressure_shift[Pa]", "null_shift_current[A]",
+                     "null_shift_current_of_rated[%]", "displacement_saturated[-]", "pressure_saturated[-]",
+                     "flapper_state_zero_current[-]", "spool_state_zero_current[-]",
+                     "flapper_state_rated_current[-]", "spool_state_rated_current[-]"};
+      const double i_rated = valve.operating.rated_current;
+      for (const auto &p : m.points)
+        doc.rows.push_back({cell(p.temperature), cell(p.deviation_angle / units::degree),
+                            cell(p.zero_current.spool.displacement), cell(p.spool_displacement_deviation),
+                            cell(p.spool_displacement_deviation_slope), cell(p.rated_current.spool.brake_pressure),
+                            cell(p.brake_pressure_deviation), cell(p.brake_pressure_deviation_slope),
+                            cell(p.brake_pressure_deviation_own_drift_removed), cell(p.null_pressure_shift),
+                            p.null_shift_current ? cell(*p.null_shift_current) : "",
+                            p.null_shift_current ? cell(100 * *p.null_shift_current / i_rated) : "",
+                            p.displacement_saturated ? "1" : "0", p.pressure_saturated ? "1" : "0",
+                            to_string(p.zero_current.flapper), to_string(p.zero_current.spool.state),
+                            to_string(p.rated_current.flapper), to_string(p.rated_current.spool.state)});
+      write_file_atomically(dir + "/drift_map.csv", doc.text());
+    }
+  } // namespace
+
+  void run(const ValveDescription &valve)
+  {
+    const SystemResults results = compute(valve, tables_directory(valve));
+    write_fits(valve, {results.flow_force_fit});
+    if (mpi_rank() == 0)
+      {
+        for (const auto &w : results.warnings)
+          std::cerr << "servodrift: warning: " << w << std::endl;
+        const std::string dir = valve.output.directory + "/system";
+        prepare_output_directory(dir);
+        write_stage_coefficients(valve, results, dir);
+        write_operating_points(valve, results, dir);
+        write_drift_map(valve, results, dir);
+        const auto plots = write_plots(valve, results, dir + "/plots");
+        write_report(valve, results, plots, valve.output.directory + "/report.md");
+      }
+    mpi_barrier();
+  }
+} // namespace servodrift::system

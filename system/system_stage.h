@@ -1,0 +1,29 @@
+#pragma once
+// The system stage: from the four coefficient tables to the stage coefficients, the operating
+// points, the drift maps, their plots and the report.
+#include "common/fitting.h"
+#include "common/valve_description.h"
+#include "system/drift_map.h"
+#include "system/stage_coefficients.h"
+
+#include <string>
+#include <vector>
+
+namespace servodrift::system
+{
+  struct SystemResults
+  {
+    std::vector<StageCoefficients> coefficients; ///< at the drift temperatures
+    DriftMap drift_map;
+    PolynomialFit flow_force_fit;                ///< E28: K_f(T), quartic in T
+    std::vector<std::string> warnings;
+    std::vector<std::string> table_producers;    ///< producer line of each table (tells the model level)
+  };
+
+  /// Everything, from the tables in `tables_directory', without writing anything.
+  SystemResults compute(const ValveDescription &valve, const std::string &tables_directory);
+
+  /// compute() on <output>/tables, then writes system/*.csv, tables/fits.json (with E28), the
+  /// plots and report.md (rank 0).
+  void run(const ValveDescription &valve);
+} // namespace servodrift::system

@@ -1,0 +1,105 @@
+#pragma once
+// The static whole-valve model (model.md 1.12-1.19), driven only by the coefficient tables.
+//
+// In steady state with the brake port blocked no oil flows into the control cavities or the brake
+// volume, so the equations form a cascade of scalar, monotone problems, each solved exactly on a
+// bracket (TOMS 748) rather than by a coupled Newton iteration that could leave the physical range:
+//   1. bridge (E31 = E32): for a flapper position, each control pressure from its half-bridge;
+//   2. torque balance (E29 static, offsets E39, D8): one equation in the armature angle, bracketed
+//      by the two nozzle contacts; no sign change means the flapper rests on a nozzle (saturation);
+//   3. spool (E35 static, E36): the force balance is piecewise linear in x_v (vented, in the lap,
+//      open to supply) and is solved in closed form; beyond the stroke the spool is on its stop.
+#include "common/valve_description.h"
+#include "system/stage_tables.h"
+
+#include <optional>
+#include <string>
+
+namespace servodrift::system
+{
+  /// Assembly offsets of E39: spring-tube rest angle, magnetic null, hydraulic null.
+  struct Offsets
+  {
+    double spring_tube_rest_angle = 0; ///< theta_s [rad]
+    double magnetic_null = 0;          ///< theta_m [rad]
+    double hydraulic_null = 0;         ///< x_n [m]
+  };
+
+  enum class FlapperState
+  {
+    free,
+    on_left_nozzle,
+    on_right_nozzle
+  };
+  enum class SpoolState
+  {
+    on_negative_stop, ///< x_v = -stroke limit
+    vented,           ///< brake port open to return, p_B = p_r
+    regulating,       ///< in the lap; p_B set by the lap-leakage divider and the force balance
+    at_supply,        ///< brake port open to supply, p_B = p_s
+    on_positive_stop  ///< x_v = +stroke limit
+  };
+  const char *to_string(FlapperState state);
+  const char *to_string(SpoolState state);
+
+  struct BridgeState
+  {
+    double left_gap, right_gap;          ///< x0 -+ x_f [m]
+    double left_pressure, right_pressure; ///< p_L, p_R [Pa]
+    double left_flow, right_flow;        ///< nozzle flows [m^3/s]
+    double left_force, right_force;      ///< flapper forces of the two jets [N]
+  };
+
+  struct SpoolSolution
+  {
+    double displacement;  ///< x_v [m]
+    double brake_pressure; ///< p_B, gauge [Pa]
+    SpoolState state;
+  };
+
+  struct OperatingPoint
+  {
+    double temperature, current;
+    double angle;                ///< theta [rad]
+    double flapper_displacement; ///< x_f = r theta - x_n [m]
+    BridgeState bridge;
+    SpoolSolution spool;
+    FlapperState flapper;
+    double control_pressure_difference() const { return bridge.left_pressure - bridge.right_pressure; }
+  };
+
+  class ValveModel
+  {
+  public:
+    ValveModel(const ValveDescription &valve, const StageTables &tables);
+
+    /// Bridge with the flapper at x_f (E31, E32) and the flapper forces (E23 / table) [blocked spool].
+    BridgeState bridge(double temperature, double flapper_displacement) const;
+    /// Static spool with blocked brake port for a control pressure difference p_L - p_R (E35, E36).
+    SpoolSolution spool(double temperature, double control_pressure_difference) const;
+    /// The static operating point (E29 static with E39 offsets).
+    OperatingPoint solve(double temperature, double current, const Offsets &offsets) const;
+
+    /// Hydraulic null x_n that centres the flapper at T0 and i = 0 for the given theta_s, theta_m:
+    /// the manufacturer's null adjustment (D8 "nulled at reference").
+    double nulling_hydraulic_null(const Offsets &offsets) const;
+    /// The current that centres the flapper (p_L = p_R) at T; empty if it lies outside the
+    /// torque_motor table's current range.
+    std::optional<double> null_shift_current(double temperature, const Offsets &offsets) const;
+    /// Offsets of a valve with assembly deviation theta_d (D8: target and nulling convention).
+    Offsets offsets_for_deviation(double deviation_angle) const;
+
+    /// Flow-force stiffness K_f = d(F_L - F_R)/dx_f at null (E24), by central differences.
+    double flow_force_stiffness(double temperature) const;
+    /// Null gap x0(T) (2.3) [m].
+    double null_gap(double temperature) const;
+
+    const StageFunctions &functions() const { return f; }
+    const ValveDescription &description() const { return valve; }
+
+  private:
+    ValveDescription valve;
+    StageFunctions f;
+    double p_s, p_r, r;
+  };
+} // namespace servodrift::system
