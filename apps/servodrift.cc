@@ -104,9 +104,11 @@ namespace
       }
     catch (const CLI::ParseError &e)
       {
+        if (e.get_exit_code() == 0) // --help, --version
+          return mpi_rank() == 0 ? app.exit(e) : 0;
         if (mpi_rank() == 0)
-          return app.exit(e); // usage errors: exit code 2 (help and version: 0)
-        return e.get_exit_code() == 0 ? 0 : 2;
+          std::cerr << "servodrift: usage error: " << e.what() << " (see `servodrift --help')" << std::endl;
+        return 2;
       }
 
     if (params->parsed())

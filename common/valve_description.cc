@@ -23,6 +23,12 @@ namespace servodrift
   {
     using dealii::ParameterHandler;
 
+    /// Parameter files list the entries in declaration order, which follows the model.
+    ParameterHandler::OutputStyle style(ParameterHandler::OutputStyle format)
+    {
+      return static_cast<ParameterHandler::OutputStyle>(format | ParameterHandler::KeepDeclarationOrder);
+    }
+
     void declare_all(ParameterHandler &prm)
     {
       OperatingConditions::declare_parameters(prm);
@@ -105,7 +111,7 @@ namespace servodrift
     {
       const std::string info = info_of(e);
       static const std::regex invalid(
-        R"(Line <(\d+)> of file <[^>]*>: The entry value (.*) for the entry named (.*) does not match the given pattern: (.*))");
+        R"(Line <(\d+)> of file <[^>]*>: The entry value ?(.*?) for the entry named (.*) does not match the given pattern: (.*))");
       static const std::regex located(R"(Line <(\d+)> of file <[^>]*>:? ?(.*))");
       std::smatch m;
       if (std::regex_match(info, m, invalid))
@@ -115,8 +121,59 @@ namespace servodrift
                  m[2].str() + " is not allowed; allowed: " + m[4].str();
         }
       if (std::regex_match(info, m, located))
-        return file + ":" + m[1].str() + ": " + m[2].str() + " (`servodrift params' lists every entry)";
+        {
+          const std::string path = subsection_at_line(file, std::stoi(m[1]));
+          return file + ":" + m[1].str() + ": " + m[2].str() +
+                 (path.empty() ? std::string(" (at top level)") : " (in subsection `" + path.substr(0, path.size() - 1) + "')") +
+                 "; `servodrift params' lists every entry";
+        }
       return file + ": " + info;
+    }
+
+    /// Sets every entry of a JSON object tree: nested objects are subsections, a leaf (or an
+    /// object with a "value" member, as `servodrift params --format json' writes) is an entry.
+    void set_json_entries(ParameterHandler &prm, const boost::property_tree::ptree &tree, const std::string &file,
+                          const std::string &path)
+    {
+      for (const auto &child : tree)
+        {
+          const std::string &key = child.first;
+          const auto &node = child.second;
+          const auto value = node.get_child_optional("value");
+          if (node.empty() || value)
+            {
+              const std::string text = one_line(value ? value->data() : node.data());
+              try
+                {
+                  prm.set(key, text);
+                }
+              catch (const dealii::ExceptionBase &e)
+                {
+                  static const std::regex mismatch(R"(The string <(.*)> does not match the given pattern <(.*)>\.)");
+                  std::smatch m;
+                  const std::string info = info_of(e);
+                  if (std::regex_match(info, m, mismatch))
+                    throw InputError(file + ": `" + path + key + "' = " + text + " is not allowed; allowed: " + m[2].str());
+                  throw InputError(file + ": no entry `" + path + key + "' (`servodrift params' lists every entry)");
+                }
+            }
+          else
+            {
+              if (!prm.subsection_path_exists({key}))
+                throw InputError(file + ": no subsection `" + path + key + "' (`servodrift params' lists every entry)");
+              prm.enter_subsection(key);
+              set_json_entries(prm, node, file, path + key + "/");
+              prm.leave_subsection();
+            }
+        }
+    }
+
+    void read_json_file(ParameterHandler &prm, const std::string &file)
+    {
+      boost::property_tree::ptree tree;
+      std::ifstream in(file);
+      boost::property_tree::read_json(in, tree);
+      set_json_entries(prm, tree, file, "");
     }
 
     void read_input_file(ParameterHandler &prm, const std::string &file)
@@ -133,10 +190,7 @@ namespace servodrift
           if (extension == ".prm")
             prm.parse_input(file);
           else if (extension == ".json")
-            {
-              std::ifstream in(file);
-              prm.parse_input_from_json(in);
-            }
+            read_json_file(prm, file);
           else
             throw InputError(file + ": unknown parameter file format `" + extension +
                              "' (use a .prm or a .json file)");
@@ -255,29 +309,6 @@ namespace servodrift
         }
     }
 
-    std::string demangle_json_key(std::string key)
-    {
-      // deal.II's JSON writer mangles spaces and some characters into _20 style escapes.
-      std::string out;
-      for (std::size_t k = 0; k < key.size(); ++k)
-        if (key[k] == '_' && k + 2 < key.size() && std::isxdigit(static_cast<unsigned char>(key[k + 1])) &&
-            std::isxdigit(static_cast<unsigned char>(key[k + 2])))
-          {
-            out += static_cast<char>(std::stoi(key.substr(k + 1, 2), nullptr, 16));
-            k += 2;
-          }
-        else
-          out += key[k];
-      return out;
-    }
-
-    boost::property_tree::ptree demangled(const boost::property_tree::ptree &in)
-    {
-      boost::property_tree::ptree out(in.data());
-      for (const auto &child : in)
-        out.push_back({demangle_json_key(child.first), demangled(child.second)});
-      return out;
-    }
   } // namespace
 
   ValveDescription load_valve_description(const std::string &input_file, const std::vector<std::string> &overrides)
@@ -288,7 +319,7 @@ namespace servodrift
     parse_all(prm, v);
     v.source = input_file.empty() ? "built-in RV-1" : input_file;
     std::ostringstream s;
-    prm.print_parameters(s, ParameterHandler::PRM);
+    prm.print_parameters(s, style(ParameterHandler::PRM));
     v.parameter_file = s.str();
     v.parameters_sha256 = sha256_hex(hashed_text(prm));
     validate(v);
@@ -304,21 +335,21 @@ namespace servodrift
     switch (format)
       {
         case ParameterFormat::prm:
-          prm.print_parameters(s, ParameterHandler::PRM);
+          prm.print_parameters(s, style(ParameterHandler::PRM));
           break;
         case ParameterFormat::json:
-          prm.print_parameters(s, ParameterHandler::JSON);
+          prm.print_parameters(s, style(ParameterHandler::JSON));
           break;
         case ParameterFormat::markdown:
           {
             std::ostringstream json;
-            prm.print_parameters(json, ParameterHandler::JSON);
+            prm.print_parameters(json, style(ParameterHandler::JSON));
             std::istringstream in(json.str());
             boost::property_tree::ptree tree;
             boost::property_tree::read_json(in, tree);
             s << "| subsection | entry | default (RV-1) | unit | allowed | meaning |\n"
               << "|---|---|---|---|---|---|\n";
-            markdown_rows(demangled(tree), "", s);
+            markdown_rows(tree, "", s);
             break;
           }
       }

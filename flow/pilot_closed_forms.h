@@ -8,9 +8,9 @@ namespace servodrift::flow
 {
   struct OrificeState
   {
-    double flow_rate;             ///< Q [m^3/s]
-    double discharge_coefficient; ///< C_d = Q/(A sqrt(2 dp/rho)) [1]
-    double reynolds_number;       ///< as in E17 (fixed orifice) or E18 (nozzle) [1]
+    double flow_rate = 0;             ///< Q [m^3/s]
+    double discharge_coefficient = 0; ///< C_d = Q/(A sqrt(2 dp/rho)) [1]
+    double reynolds_number = 0;       ///< as in E17 (fixed orifice) or E18 (nozzle) [1]
     double flapper_force = 0;     ///< nozzle only: force of the jet on the flapper (E23) [N]
     bool clamped = false;         ///< a law was clamped to its validity window (C6)
   };
