@@ -90,7 +90,6 @@ namespace servodrift::laws
     g.armature_thickness = 2.0 * half_H_ar;
     g.magnet_length = H_m;
     g.magnet_area = expanded(m.magnet_width, alpha.magnet, T, T0) * expanded(m.magnet_depth, alpha.magnet, T, T0);
-    g.pole_piece_scale = expanded(1.0, alpha.pole_pieces, T, T0);
     return g;
   }
 

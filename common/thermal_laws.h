@@ -71,7 +71,6 @@ namespace servodrift::laws
     double armature_thickness;     ///< H_ar(T) [m]
     double magnet_length;          ///< l_m(T) [m]
     double magnet_area;            ///< A_m(T) of one magnet [m^2]
-    double pole_piece_scale;       ///< 1 + alpha_c (T - T0): length scale of the pole pieces [1]
   };
   TorqueMotorGeometry torque_motor_geometry(const TorqueMotorParameters &motor,
                                             const ThermalExpansion &alpha, double T, double T0);

@@ -32,7 +32,8 @@ namespace servodrift::flow
                                            [&](double dpn) { return momentum_nozzle(gap, dpn).flow_rate; }, p_s, p_r);
           return momentum_nozzle(gap, p - p_r).flapper_force;
         };
-        const double K_f_momentum = (force(g.null_gap - dx) - force(g.null_gap + dx)) / (2 * dx);
+        // F_L - F_R = F(x0 - x_f) - F(x0 + x_f): its slope at x_f = 0 is -2 F'(x0)
+        const double K_f_momentum = (force(g.null_gap - dx) - force(g.null_gap + dx)) / dx;
         const auto K_f_paper = paper::flow_force_stiffness(T);
         force_scale = K_f_paper.value / K_f_momentum;
         force_clamped = K_f_paper.clamped;

@@ -26,10 +26,12 @@ namespace servodrift::magnetics
     mmf = laws::remanence(m, T, T0) * g.magnet_length / (mu0 * m.recoil_permeability);
     // E2: R_m = l_m/(mu0 mu_rm A_m,tot), magnets in parallel
     R_m = g.magnet_length / (mu0 * m.recoil_permeability * m.number_of_magnets * g.magnet_area);
-    // A reluctance l/(mu A) of a body that grows uniformly scales as 1/length.
-    R_l = m.leakage_reluctance / g.pole_piece_scale;
-    R_c = m.pole_piece_reluctance / g.pole_piece_scale;
-    R_a = m.armature_reluctance / g.pole_piece_scale;
+    // Lumped reluctances of model.md 2.2 without a thermal law: 1.3 lets the gaps, a, A_g and l_m
+    // grow, not these. (Scaling R_l as 1/length with the pole pieces would move the 40 -> 120 degC
+    // torque trend by -0.06 %, against C2's independent check; see doc/validation.md.)
+    R_l = m.leakage_reluctance;
+    R_c = m.pole_piece_reluctance;
+    R_a = m.armature_reluctance;
     effective_turns = m.effective_turns();
   }
 

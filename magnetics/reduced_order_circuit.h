@@ -29,7 +29,7 @@ namespace servodrift::magnetics
 
     double magnet_mmf() const { return mmf; }                 ///< M(T) = B_r l_m/(mu0 mu_rm) (E8) [A]
     double magnet_reluctance() const { return R_m; }          ///< R_m (E2) [A/Wb]
-    double leakage_reluctance() const { return R_l; }         ///< R_l(T) [A/Wb]
+    double leakage_reluctance() const { return R_l; }         ///< R_l [A/Wb]
     double gap_reluctance_at_null() const;                    ///< R_g of the mean gap (E2, E4) [A/Wb]
     double pivot_to_pole_distance() const { return a; }       ///< a(T) [m]
     double mean_gap() const { return 0.5 * (g12 + g34); }     ///< [m]

@@ -60,8 +60,8 @@ namespace servodrift
                       "Relative permeability mu_rm of the linear recoil line, so that H_cB = "
                       "B_r/(mu0*mu_rm) = 110 kA/m (E8, D4). [1]");
     prm.declare_entry("Leakage reluctance", "1.42e7", Patterns::Double(0, 1e12),
-                      "Leakage reluctance R_l between the pole plates at T0 (E3); scales as 1/length "
-                      "with the pole-piece expansion. [A/Wb]");
+                      "Leakage reluctance R_l between the pole plates (E3), temperature-independent as "
+                      "in model.md 1.3. [A/Wb]");
     prm.declare_entry("Pole piece reluctance", "0", Patterns::Double(0, 1e12),
                       "Pole-piece (magnetic conductor) reluctance R_c in series with the magnets (E3). "
                       "[A/Wb]");
@@ -74,6 +74,10 @@ namespace servodrift
                       "Initial susceptibility chi0 of the 1J50 arctan B-H law (2.2); field level. [1]");
     prm.declare_entry("Model depth", "4.0e-3", Patterns::Double(0, 1),
                       "Out-of-plane depth w_d of the planar field model (D10, 4.1). [m]");
+    prm.declare_entry("Magnetic spring law", "circuit", Patterns::Selection("circuit|paper-fit"),
+                      "circuit: the torque as computed; paper-fit: its secant magnetic spring (C1) "
+                      "replaced by the paper's fit E25, K_m = 11.61 - 0.004837 T N*m/rad, clamped to "
+                      "40..120 degC and flagged outside that window (C6; paper preset D2). [-]");
     prm.leave_subsection();
   }
 
@@ -108,6 +112,7 @@ namespace servodrift
     saturation_polarisation = prm.get_double("Saturation polarisation");
     initial_susceptibility = prm.get_double("Initial susceptibility");
     model_depth = prm.get_double("Model depth");
+    paper_magnetic_spring = prm.get("Magnetic spring law") == "paper-fit";
     prm.leave_subsection();
   }
 } // namespace servodrift

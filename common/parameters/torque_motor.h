@@ -41,6 +41,7 @@ namespace servodrift
     double saturation_polarisation; ///< J_s of the 1J50 arctan B-H law [T]
     double initial_susceptibility;  ///< chi0 of the 1J50 arctan B-H law [1]
     double model_depth;             ///< w_d of the planar field model (D10) [m]
+    bool paper_magnetic_spring;     ///< replace the linear magnetic spring by the paper's fit E25 (D2)
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(dealii::ParameterHandler &prm);

@@ -1,0 +1,12 @@
+// GoogleTest main that initialises MPI (through deal.II) as servodrift's main does, so that the
+// sweep runner works the same in the tests.
+#include <deal.II/base/mpi.h>
+
+#include <gtest/gtest.h>
+
+int main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}

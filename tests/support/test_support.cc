@@ -1,0 +1,42 @@
+#include "tests/support/test_support.h"
+
+#include "common/stage_output.h"
+#include "flow/pilot_stage.h"
+#include "magnetics/torque_motor_stage.h"
+#include "structure/spring_tube_stage.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
+namespace servodrift::test
+{
+  std::string temporary_directory()
+  {
+    std::string pattern = (std::filesystem::temp_directory_path() / "servodrift-test-XXXXXX").string();
+    if (!::mkdtemp(pattern.data()))
+      throw std::runtime_error("mkdtemp failed");
+    return pattern;
+  }
+
+  ValveDescription valve(std::vector<std::string> overrides)
+  {
+    overrides.push_back("Output/Directory=" + temporary_directory());
+    overrides.push_back("Output/Progress=none");
+    return load_valve_description("", overrides);
+  }
+
+  std::string write_reduced_order_tables(const ValveDescription &v)
+  {
+    magnetics::run(v);
+    structure::run(v);
+    flow::run(v);
+    return tables_directory(v);
+  }
+
+  double relative(double a, double b)
+  {
+    return std::abs(a - b) / std::abs(b);
+  }
+} // namespace servodrift::test

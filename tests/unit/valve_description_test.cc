@@ -1,0 +1,184 @@
+// The valve description: defaults are RV-1, files and overrides apply in order, and every kind of
+// bad input is refused with one line that names the entry.
+#include "common/error.h"
+#include "common/output_files.h"
+#include "common/units.h"
+#include "common/valve_description.h"
+#include "tests/support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <fstream>
+
+using namespace servodrift;
+
+namespace
+{
+  std::string write(const std::string &name, const std::string &text)
+  {
+    const std::string path = test::temporary_directory() + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+  }
+
+  /// The message of the InputError thrown by f (fails the test if none is thrown).
+  template <typename F>
+  std::string refusal(F &&f)
+  {
+    try
+      {
+        f();
+      }
+    catch (const InputError &e)
+      {
+        const std::string m = e.what();
+        EXPECT_EQ(m.find('\n'), std::string::npos) << "not one line: " << m;
+        return m;
+      }
+    ADD_FAILURE() << "no InputError";
+    return "";
+  }
+} // namespace
+
+TEST(ValveDescription, DefaultsAreRV1)
+{
+  const auto v = load_valve_description();
+  EXPECT_EQ(v.source, "built-in RV-1");
+  EXPECT_DOUBLE_EQ(v.operating.supply_pressure, 21e6);
+  EXPECT_DOUBLE_EQ(v.operating.return_pressure, 0.4e6);
+  EXPECT_DOUBLE_EQ(v.torque_motor.pivot_to_pole_distance, 14.8e-3);
+  EXPECT_EQ(v.torque_motor.turns_per_coil, 1100u);
+  EXPECT_DOUBLE_EQ(v.spring_tube.modulus_temperature_coefficient, 3.5e-4); // D5
+  EXPECT_DOUBLE_EQ(v.pilot.null_gap, 40e-6);
+  EXPECT_DOUBLE_EQ(v.spool.spring_rate, 1.0e3);  // C5
+  EXPECT_DOUBLE_EQ(v.spool.spring_preload, 0.33); // C5
+  EXPECT_EQ(v.fluid.viscosity_law, FluidParameters::ViscosityLaw::vogel); // D6
+  EXPECT_EQ(v.offsets.nulling, OffsetParameters::Nulling::nulled_at_reference); // D8
+  EXPECT_EQ(v.sweeps.drift_temperatures.size(), 17u);
+  EXPECT_EQ(v.sweeps.deviation_angles.size(), 21u);
+  EXPECT_NEAR(v.sweeps.deviation_angles.back(), 0.05 * units::degree, 1e-18);
+  EXPECT_EQ(v.parameters_sha256.size(), 64u);
+}
+
+TEST(ValveDescription, FileThenOverridesInOrder)
+{
+  const std::string prm = write("a.prm", "subsection Pilot stage\n  set Null gap = 30e-6\nend\n");
+  const auto v = load_valve_description(prm, {"Pilot stage/Null gap=35e-6", "Spool/Overlap = 10e-6"});
+  EXPECT_DOUBLE_EQ(v.pilot.null_gap, 35e-6);
+  EXPECT_DOUBLE_EQ(v.spool.overlap, 10e-6);
+  EXPECT_EQ(v.source, prm);
+}
+
+TEST(ValveDescription, JsonEqualsPrm)
+{
+  const std::string prm = write("a.prm", "subsection Pilot stage\n  set Null gap = 30e-6\nend\n");
+  const std::string json = write("a.json", R"({ "Pilot stage": { "Null gap": "30e-6" } })");
+  EXPECT_EQ(load_valve_description(prm).parameters_sha256, load_valve_description(json).parameters_sha256);
+  // the JSON that `servodrift params --format json' prints reads back to the same valve
+  const std::string printed = write("p.json", print_parameters("", {"Spool/Overlap=12e-6"}, ParameterFormat::json));
+  EXPECT_EQ(load_valve_description(printed).parameters_sha256,
+            load_valve_description("", {"Spool/Overlap=12e-6"}).parameters_sha256);
+}
+
+TEST(ValveDescription, HashIgnoresOutputButNotPhysics)
+{
+  const auto a = load_valve_description("", {"Output/Directory=x"});
+  const auto b = load_valve_description("", {"Output/Directory=y", "Output/Plots=false"});
+  const auto c = load_valve_description("", {"Spool/Overlap=12e-6"});
+  EXPECT_EQ(a.parameters_sha256, b.parameters_sha256);
+  EXPECT_NE(a.parameters_sha256, c.parameters_sha256);
+}
+
+TEST(ValveDescription, RefusesMalformedFile)
+{
+  const std::string m = refusal([] { load_valve_description(write("m.prm", "subsection Pilot stage\n  set Null gap 3\nend\n")); });
+  EXPECT_NE(m.find("m.prm:2"), std::string::npos) << m;
+  const std::string unbalanced =
+    refusal([] { load_valve_description(write("u.prm", "subsection Pilot stage\n  set Null gap = 3e-5\n")); });
+  EXPECT_NE(unbalanced.find("u.prm"), std::string::npos) << unbalanced;
+  const std::string json = refusal([] { load_valve_description(write("j.json", "{ \"Pilot stage\": {")); });
+  EXPECT_NE(json.find("not valid JSON"), std::string::npos) << json;
+  const std::string missing = refusal([] { load_valve_description("/nonexistent/valve.prm"); });
+  EXPECT_NE(missing.find("/nonexistent/valve.prm"), std::string::npos) << missing;
+  const std::string format = refusal([] { load_valve_description(write("v.txt", "x")); });
+  EXPECT_NE(format.find("use a .prm or a .json file"), std::string::npos) << format;
+}
+
+TEST(ValveDescription, RefusesUnknownKey)
+{
+  const std::string in_file =
+    refusal([] { load_valve_description(write("k.prm", "subsection Pilot stage\n  set Nul gap = 3e-5\nend\n")); });
+  EXPECT_NE(in_file.find("k.prm:2"), std::string::npos) << in_file;
+  EXPECT_NE(in_file.find("Nul gap"), std::string::npos) << in_file;
+  EXPECT_NE(in_file.find("Pilot stage"), std::string::npos) << in_file;
+  const std::string in_override = refusal([] { load_valve_description("", {"Pilot stage/Nul gap=3e-5"}); });
+  EXPECT_NE(in_override.find("no entry `Nul gap' in subsection `Pilot stage'"), std::string::npos) << in_override;
+  const std::string section = refusal([] { load_valve_description("", {"Pilot/Null gap=3e-5"}); });
+  EXPECT_NE(section.find("no subsection `Pilot'"), std::string::npos) << section;
+}
+
+TEST(ValveDescription, RefusesValuesOutOfRange)
+{
+  // negative gap: the entry's own range, named with the allowed range
+  const std::string negative = refusal([] { load_valve_description("", {"Pilot stage/Null gap=-1e-6"}); });
+  EXPECT_NE(negative.find("Null gap"), std::string::npos) << negative;
+  EXPECT_NE(negative.find("allowed: [Double 0...0.1"), std::string::npos) << negative;
+  const std::string in_file =
+    refusal([] { load_valve_description(write("n.prm", "subsection Pilot stage\n  set Null gap = -1e-6\nend\n")); });
+  EXPECT_NE(in_file.find("n.prm:2: `Pilot stage/Null gap' = -1e-6 is not allowed"), std::string::npos) << in_file;
+  // x0 larger than the nozzle radius (and than D_N/4)
+  const std::string gap = refusal([] { load_valve_description("", {"Pilot stage/Null gap=0.25e-3"}); });
+  EXPECT_NE(gap.find("`Pilot stage/Null gap'"), std::string::npos) << gap;
+  EXPECT_NE(gap.find("D_N/4"), std::string::npos) << gap;
+  // temperature outside the oil law's range
+  const std::string hot = refusal([] { load_valve_description("", {"Sweeps/Drift temperatures=40, 160"}); });
+  EXPECT_NE(hot.find("`Sweeps/Drift temperatures' contains 160 degC"), std::string::npos) << hot;
+  const std::string cold = refusal([] { load_valve_description("", {"Sweeps/Table temperatures=-60, 40, 120"}); });
+  EXPECT_NE(cold.find("-60 degC"), std::string::npos) << cold;
+  // relations between entries
+  EXPECT_NE(refusal([] { load_valve_description("", {"Spring tube/Inner diameter=3.6e-3"}); }).find("Inner diameter"),
+            std::string::npos);
+  EXPECT_NE(refusal([] { load_valve_description("", {"Operating conditions/Return pressure=22e6"}); }).find("Return pressure"),
+            std::string::npos);
+  EXPECT_NE(refusal([] { load_valve_description("", {"Pilot stage/Land diameter=0.3e-3"}); }).find("Land diameter"),
+            std::string::npos);
+  EXPECT_NE(refusal([] { load_valve_description("", {"Sweeps/Motor angles=-1.2, 0, 1.2"}); }).find("Motor angles"),
+            std::string::npos);
+  EXPECT_NE(refusal([] { load_valve_description("", {"Sweeps/Table temperatures=40, 30, 120"}); }).find("strictly increasing"),
+            std::string::npos);
+  EXPECT_NE(refusal([] { load_valve_description("", {"Torque motor/Armature height=10.3e-3"}); }).find("gap"),
+            std::string::npos);
+  EXPECT_NE(refusal([] {
+              load_valve_description("", {"Offsets/Deviation target=hydraulic-null"});
+            }).find("zero drift by construction"),
+            std::string::npos);
+}
+
+TEST(ValveDescription, PrintedParameterFileReadsBack)
+{
+  const std::string text = print_parameters("", {}, ParameterFormat::prm);
+  EXPECT_NE(text.find("subsection Operating conditions"), std::string::npos);
+  const std::string path = write("rv1.prm", text);
+  EXPECT_EQ(load_valve_description(path).parameters_sha256, load_valve_description().parameters_sha256);
+  // every entry documents its unit as the last thing of its doc string
+  const std::string md = print_parameters("", {}, ParameterFormat::markdown);
+  std::size_t rows = 0, pos = 0;
+  while ((pos = md.find("\n| `", pos)) != std::string::npos)
+    {
+      const std::size_t end = md.find('\n', pos + 1);
+      const std::string row = md.substr(pos + 1, end - pos - 1);
+      // columns: subsection | entry | default | unit | allowed | meaning
+      std::size_t bars = 0, k = 0, unit_start = 0;
+      for (; k < row.size() && bars < 4; ++k)
+        if (row[k] == '|' && ++bars == 4)
+          unit_start = k + 1;
+      const std::string unit = row.substr(unit_start, row.find('|', unit_start) - unit_start);
+      EXPECT_GT(unit.find_first_not_of(' '), 0u) << row;
+      EXPECT_NE(unit.find_first_not_of(' '), std::string::npos) << "no unit: " << row;
+      ++rows;
+      pos = end;
+    }
+  EXPECT_GT(rows, 100u);
+}

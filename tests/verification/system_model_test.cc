@@ -1,0 +1,233 @@
+// The static whole-valve model on the reduced-order tables: symmetry, null, the pilot-stage figures
+// of model.md (C4, 2.5-2.7), the spool regimes, saturation, table ranges and the drift maps.
+#include "common/error.h"
+#include "common/units.h"
+#include "system/system_stage.h"
+#include "system/valve_model.h"
+#include "tests/support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <cmath>
+
+using namespace servodrift;
+using namespace servodrift::system;
+using test::relative;
+
+namespace
+{
+  struct Valve
+  {
+    ValveDescription description;
+    std::string tables;
+    ValveModel model;
+    explicit Valve(const std::vector<std::string> &overrides)
+      : description(test::valve(overrides))
+      , tables(test::write_reduced_order_tables(description))
+      , model(description, StageTables::read(tables, description))
+    {}
+  };
+
+  const Valve &rv1()
+  {
+    static const Valve v({});
+    return v;
+  }
+} // namespace
+
+TEST(SystemModel, SymmetricValveSitsAtNull)
+{
+  const auto &m = rv1().model;
+  for (double T : {40.0, 80.0, 120.0})
+    {
+      const OperatingPoint op = m.solve(T, 0.0, Offsets{});
+      EXPECT_EQ(op.flapper, FlapperState::free);
+      EXPECT_LT(std::abs(op.angle), 1e-14) << T;              // rad
+      EXPECT_LT(std::abs(op.flapper_displacement), 1e-15) << T; // m
+      EXPECT_LT(std::abs(op.control_pressure_difference()), 1e-6) << T; // Pa, of 10.8 MPa
+      // at zero control pressure the spool rests on its preload: x_v = -F_s0/k_s, vented
+      EXPECT_EQ(op.spool.state, SpoolState::vented);
+      EXPECT_LT(relative(op.spool.displacement, -0.33 / 1e3), 1e-9);
+      EXPECT_DOUBLE_EQ(op.spool.brake_pressure, 0.4e6);
+    }
+}
+
+TEST(SystemModel, PilotGainAndStiffnessOfModelMd)
+{
+  const auto &m = rv1().model;
+  // C4: blocked pressure gain at null 0.541 / 0.523 MPa/um at 40 / 120 degC (3 digits)
+  for (const auto &[T, gain] : {std::pair{40.0, 0.541e12}, std::pair{120.0, 0.523e12}})
+    {
+      const double dx = 0.01e-6;
+      const auto plus = m.bridge(T, dx), minus = m.bridge(T, -dx);
+      const double g = ((plus.left_pressure - plus.right_pressure) - (minus.left_pressure - minus.right_pressure)) / (2 * dx);
+      EXPECT_LT(relative(g, gain), 2e-3) << T;
+    }
+  // 2.6: K_f = 5.95e4 (40) and 5.72e4 (120) N/m; 1.12: K_a - K_m + r^2 K_f = 16.0 N*m/rad at 40 degC
+  EXPECT_LT(relative(m.flow_force_stiffness(40), 5.95e4), 0.005);
+  EXPECT_LT(relative(m.flow_force_stiffness(120), 5.72e4), 0.005);
+  // the flapper force difference is odd in x_f for the symmetric pilot
+  const auto a = m.bridge(40, 7e-6), b = m.bridge(40, -7e-6);
+  EXPECT_LT(std::abs((a.left_force - a.right_force) + (b.left_force - b.right_force)), 1e-9 * (a.left_force - a.right_force));
+}
+
+TEST(SystemModel, RatedOperatingPoint)
+{
+  // 2.5: x_f at 20 mA, 40 degC = 11.9 um (theta = 0.068 deg), 3 digits; 2.7: brake pressure about
+  // 10 MPa above return. E35 must hold exactly in the lap.
+  const OperatingPoint op = rv1().model.solve(40, 0.020, Offsets{});
+  EXPECT_EQ(op.flapper, FlapperState::free);
+  EXPECT_LT(relative(op.flapper_displacement, 11.9e-6), 0.005);
+  EXPECT_EQ(op.spool.state, SpoolState::regulating);
+  const double A_v = units::pi * 25e-6 / 4, A_fb = units::pi * 16e-6 / 4; // at T0: no expansion
+  const double residual = A_v * op.control_pressure_difference() - A_fb * (op.spool.brake_pressure - 0.4e6) -
+                          1e3 * op.spool.displacement - 0.33;
+  EXPECT_LT(std::abs(residual), 1e-9);
+  EXPECT_LT(std::abs(op.spool.displacement), 20e-6);
+  EXPECT_LT(relative(op.spool.brake_pressure - 0.4e6, 10.0e6), 0.015);
+}
+
+TEST(SystemModel, SpoolRegimes)
+{
+  const auto &m = rv1().model;
+  EXPECT_EQ(m.spool(40, -1e6).state, SpoolState::on_negative_stop);
+  EXPECT_DOUBLE_EQ(m.spool(40, -1e6).displacement, -0.4e-3);
+  EXPECT_EQ(m.spool(40, 0).state, SpoolState::vented);
+  EXPECT_EQ(m.spool(40, 6e6).state, SpoolState::regulating);
+  // open to supply: A_v dp_c between A_fb (p_s - p_r) + F_s0 + k_s x_ov and ... + k_s x_max
+  const double A_v = units::pi * 25e-6 / 4, A_fb = units::pi * 16e-6 / 4, edge = A_fb * 20.6e6 + 0.33;
+  EXPECT_EQ(m.spool(40, (edge + 1e3 * 0.2e-3) / A_v).state, SpoolState::at_supply);
+  EXPECT_DOUBLE_EQ(m.spool(40, (edge + 1e3 * 0.2e-3) / A_v).brake_pressure, 21e6);
+  EXPECT_EQ(m.spool(40, 14e6).state, SpoolState::on_positive_stop);
+  // continuity at the lap edges: the brake pressure is a continuous, rising function of dp_c
+  double last = -1;
+  for (double dp = -2e6; dp <= 20.6e6; dp += 1e4)
+    {
+      const double p = m.spool(40, dp).brake_pressure;
+      EXPECT_GE(p, last);
+      if (last >= 0)
+        {
+          EXPECT_LT(p - last, 1e4 * 1.5625 * 1.0001); // at most A_v/A_fb per Pa
+        }
+      last = p;
+    }
+}
+
+TEST(SystemModel, SaturatedFlapperIsAStateNotAFailure)
+{
+  // The paper's literal reading E38 with theta_d = 1 deg: theta_s = -1 deg pulls the armature to
+  // negative angles and the flapper onto the right nozzle (1.19: it touches at 0.23 deg).
+  const auto &m = rv1().model;
+  Offsets o;
+  o.spring_tube_rest_angle = -1.0 * units::degree;
+  const OperatingPoint op = m.solve(40, 0.0, o);
+  EXPECT_EQ(op.flapper, FlapperState::on_right_nozzle);
+  EXPECT_NEAR(op.flapper_displacement, -40e-6, 1e-15);
+  EXPECT_DOUBLE_EQ(op.bridge.right_gap, 0.0);
+  EXPECT_LT(relative(op.bridge.right_pressure, 21e6), 1e-9); // no flow: the cavity sees the supply
+  EXPECT_EQ(op.spool.state, SpoolState::on_negative_stop);  // p_L - p_R is about -17 MPa
+  EXPECT_TRUE(std::isfinite(op.spool.brake_pressure));
+  o.spring_tube_rest_angle = +1.0 * units::degree;
+  EXPECT_EQ(m.solve(40, 0.0, o).flapper, FlapperState::on_left_nozzle);
+}
+
+TEST(SystemModel, QueryBeyondTheTablesFailsClearly)
+{
+  const Valve narrow({"Sweeps/Motor angles=-0.15, -0.1, -0.05, 0, 0.05, 0.1, 0.15"});
+  Offsets o;
+  o.magnetic_null = 0.2 * units::degree; // the armature would need angles outside the table
+  try
+    {
+      narrow.model.solve(40, 0.0, o);
+      FAIL();
+    }
+  catch (const TableRangeError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("Sweeps/Motor angles"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SystemModel, NullShiftCurrentRestoresNull)
+{
+  const auto &m = rv1().model;
+  Offsets o;
+  o.magnetic_null = 0.01 * units::degree;
+  const auto i = m.null_shift_current(80, o);
+  ASSERT_TRUE(i.has_value());
+  EXPECT_LT(std::abs(m.solve(80, *i, o).control_pressure_difference()), 1.0); // Pa
+  // E29 linearised: K_t i = K_m theta_m
+  EXPECT_LT(relative(*i, 11.0 * 0.01 * units::degree / 0.94), 0.05);
+}
+
+TEST(DriftMap, DeviationsVanishAtTheirReference)
+{
+  for (const char *nulling : {"nulled-at-reference", "as-assembled"})
+    {
+      const auto v = test::valve({std::string("Offsets/Nulling=") + nulling,
+                                     "Sweeps/Drift temperatures=40, 60, 80, 100, 120",
+                                     "Sweeps/Deviation angles=-0.02, -0.01, 0, 0.01, 0.02"});
+      const auto r = system::compute(v, test::write_reduced_order_tables(v));
+      const auto &m = r.drift_map;
+      for (std::size_t t = 0; t < m.temperatures.size(); ++t)
+        for (std::size_t a = 0; a < m.deviation_angles.size(); ++a)
+          {
+            const auto &p = m.at(t, a);
+            const bool at_reference = m.nulled_at_reference ? m.temperatures[t] == 40 : m.deviation_angles[a] == 0;
+            if (at_reference)
+              {
+                EXPECT_LT(std::abs(p.spool_displacement_deviation), 1e-15) << nulling;
+                EXPECT_LT(std::abs(p.brake_pressure_deviation), 1e-6) << nulling;
+              }
+            if (m.nulled_at_reference && m.temperatures[t] == 40)
+              {
+                ASSERT_TRUE(p.null_shift_current.has_value());
+                EXPECT_LT(std::abs(*p.null_shift_current), 1e-12); // nulled: no current needed at T0
+                EXPECT_LT(std::abs(p.null_pressure_shift), 1e-3);
+              }
+          }
+    }
+}
+
+TEST(DriftMap, OddInTheDeviationAngleForTheSymmetricValve)
+{
+  // At i = 0 the pilot and the motor are symmetric: the null pressure shift, the null-shift current
+  // and the flapper position change sign with theta_d. (The spool is not symmetric: its preload
+  // holds it at -F_s0/k_s; nor is the rated-current point.)
+  for (const char *nulling : {"nulled-at-reference", "as-assembled"})
+    for (const char *target : {"magnetic-null", "spring-tube-rest-angle"})
+      {
+        const auto v = test::valve({std::string("Offsets/Nulling=") + nulling, std::string("Offsets/Deviation target=") + target,
+                                       "Sweeps/Drift temperatures=40, 80, 120", "Sweeps/Deviation angles=-0.004, 0, 0.004"});
+        const auto r = system::compute(v, test::write_reduced_order_tables(v));
+        const auto &m = r.drift_map;
+        for (std::size_t t = 0; t < m.temperatures.size(); ++t)
+          {
+            const auto &minus = m.at(t, 0), &plus = m.at(t, 2);
+            const double scale = std::max(std::abs(plus.null_pressure_shift), 1.0);
+            EXPECT_LT(std::abs(plus.null_pressure_shift + minus.null_pressure_shift), 1e-7 * scale) << nulling << target;
+            EXPECT_LT(std::abs(*plus.null_shift_current + *minus.null_shift_current), 1e-12) << nulling << target;
+            EXPECT_LT(std::abs(plus.zero_current.flapper_displacement + minus.zero_current.flapper_displacement), 1e-15);
+          }
+      }
+}
+
+TEST(DriftMap, PaperPresetFlowForceFollowsThePaperTable)
+{
+  // D2: with the paper-table flapper force, the system model's K_f(T) at null is the paper's
+  // (section 3 item 10), up to the tables' interpolation (PCHIP in T, gap and dp): 1 %.
+  const Valve paper({"Pilot stage/Flapper force law=paper-table"});
+  const double expected[] = {57.5e3, 29.5e3, 15.2e3, 21.0e3, 25.5e3, 28.9e3, 31.4e3, 33.2e3, 34.5e3};
+  for (int k = 0; k < 9; ++k)
+    EXPECT_LT(relative(paper.model.flow_force_stiffness(40 + 10 * k), expected[k]), 0.01) << 40 + 10 * k;
+}
+
+TEST(DriftMap, FlowForceFitE28)
+{
+  const auto v = test::valve({"Sweeps/Deviation angles=0"});
+  const auto r = system::compute(v, test::write_reduced_order_tables(v));
+  EXPECT_EQ(r.flow_force_fit.coefficients.size(), 5u);
+  EXPECT_GT(r.flow_force_fit.r_squared, 0.9999);
+  EXPECT_LT(relative(r.flow_force_fit({40}), 5.95e4), 0.005);
+}
