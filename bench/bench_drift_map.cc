@@ -1,0 +1,65 @@
+// Benchmark: one drift map of 17 temperatures x 21 deviation angles (issue 2: under 1 s) on the
+// reduced-order tables of RV-1, and the whole system stage without plots. Not a test: it prints
+// wall times (minimum and median of several repetitions).
+//   build/bench/bench_drift_map [repetitions]
+#include "common/stage_output.h"
+#include "common/sweep.h"
+#include "flow/pilot_stage.h"
+#include "magnetics/torque_motor_stage.h"
+#include "structure/spring_tube_stage.h"
+#include "system/drift_map.h"
+#include "system/system_stage.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+using namespace servodrift;
+
+namespace
+{
+  template <typename F>
+  std::pair<double, double> time_it(int repetitions, F &&f)
+  {
+    std::vector<double> t;
+    for (int k = 0; k < repetitions; ++k)
+      {
+        const auto start = std::chrono::steady_clock::now();
+        f();
+        t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      }
+    std::sort(t.begin(), t.end());
+    return {t.front(), t[t.size() / 2]};
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const int repetitions = argc > 1 ? std::atoi(argv[1]) : 5;
+  const std::string dir = (std::filesystem::temp_directory_path() / "servodrift-bench").string();
+  const ValveDescription valve = load_valve_description("", {"Output/Directory=" + dir, "Output/Progress=none",
+                                                              "Output/Plots=false"});
+  const auto tables = time_it(repetitions, [&] {
+    magnetics::run(valve);
+    structure::run(valve);
+    flow::run(valve);
+  });
+  const system::ValveModel model(valve, system::StageTables::read(tables_directory(valve), valve));
+  const auto map = time_it(repetitions, [&] { system::compute_drift_map(model, OutputParameters::Progress::none); });
+  const auto whole = time_it(repetitions, [&] { system::compute(valve, tables_directory(valve)); });
+  if (mpi_rank() == 0)
+    std::cout << "reduced-order tables (4 tables):          min " << tables.first << " s, median " << tables.second << " s\n"
+              << "drift map " << valve.sweeps.drift_temperatures.size() << " x " << valve.sweeps.deviation_angles.size()
+              << " (" << 2 * valve.sweeps.drift_temperatures.size() * valve.sweeps.deviation_angles.size()
+              << " operating points): min " << map.first << " s, median " << map.second << " s\n"
+              << "system stage without I/O (coefficients, drift map, E28): min " << whole.first << " s, median "
+              << whole.second << " s\n"
+              << "(" << repetitions << " repetitions, " << mpi_size() << " MPI rank(s))\n";
+  std::filesystem::remove_all(dir);
+  return 0;
+}
