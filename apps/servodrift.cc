@@ -1,6 +1,5 @@
 // servodrift: the command line. Subcommands only, no physics: each calls one module's run().
 #include "common/error.h"
-#include "common/output_files.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
 #include "common/valve_description.h"
@@ -68,12 +67,7 @@ namespace
     say(producer_string("on " + std::to_string(mpi_size()) + (mpi_size() == 1 ? " rank" : " ranks")));
     ValveDescription valve = load(o);
     say("valve description: " + valve.source + ", output: " + valve.output.directory + "/");
-    if (mpi_rank() == 0)
-      {
-        prepare_output_directory(valve.output.directory);
-        write_parameters_file(valve);
-      }
-    mpi_barrier();
+    write_parameters_file(valve); // creates the output directory, or stops every rank with the reason
     return valve;
   }
 

@@ -1,5 +1,6 @@
 #include "common/stage_output.h"
 
+#include "common/error.h"
 #include "common/grid_function.h"
 #include "common/output_files.h"
 #include "common/sweep.h"
@@ -30,24 +31,42 @@ namespace servodrift
       MPI_Barrier(MPI_COMM_WORLD);
   }
 
+  void on_rank_zero(const std::function<void()> &write)
+  {
+    std::string error;
+    if (mpi_rank() == 0)
+      try
+        {
+          write();
+        }
+      catch (const std::exception &e)
+        {
+          error = e.what();
+        }
+    if (mpi_size() > 1)
+      error = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, error, 0);
+    if (!error.empty())
+      throw InputError(error);
+  }
+
   void write_table(const ValveDescription &valve, Table &table, const std::string &stage_and_level)
   {
     table.producer = producer_string(stage_and_level);
     table.parameters_sha256 = valve.parameters_sha256;
-    if (mpi_rank() == 0)
-      {
-        prepare_output_directory(tables_directory(valve));
-        table.write(table_path(valve, table.name()));
-      }
-    mpi_barrier();
+    on_rank_zero([&] {
+      prepare_output_directory(tables_directory(valve));
+      table.write(table_path(valve, table.name()));
+    });
   }
 
   void write_parameters_file(const ValveDescription &valve)
   {
-    if (mpi_rank() == 0)
+    on_rank_zero([&] {
+      prepare_output_directory(valve.output.directory);
       write_file_atomically(valve.output.directory + "/parameters.prm",
                             "# " + producer_string("parameters as used; source: " + valve.source) + "\n" +
                               valve.parameter_file);
+    });
   }
 
   namespace
@@ -199,16 +218,15 @@ namespace servodrift
         fits.insert(fits.end(), f.begin(), f.end());
       }
     fits.insert(fits.end(), extra.begin(), extra.end());
-    if (mpi_rank() == 0)
-      {
-        Json list = Json::array();
-        for (const auto &f : fits)
-          list.push_back(f.to_json());
-        Json doc = Json::object();
-        doc.set("producer", producer_string("fits")).set("parameters-sha256", valve.parameters_sha256).set("fits", list);
-        write_file_atomically(tables_directory(valve) + "/fits.json", doc.dump());
-      }
-    mpi_barrier();
+    on_rank_zero([&] {
+      Json list = Json::array();
+      for (const auto &f : fits)
+        list.push_back(f.to_json());
+      Json doc = Json::object();
+      doc.set("producer", producer_string("fits")).set("parameters-sha256", valve.parameters_sha256).set("fits", list);
+      prepare_output_directory(tables_directory(valve));
+      write_file_atomically(tables_directory(valve) + "/fits.json", doc.dump());
+    });
     return fits;
   }
 } // namespace servodrift

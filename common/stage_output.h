@@ -6,6 +6,7 @@
 #include "common/table.h"
 #include "common/valve_description.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,4 +32,8 @@ namespace servodrift
 
   /// Waits for all MPI ranks (no-op without MPI).
   void mpi_barrier();
+
+  /// Runs `write' on rank 0 only (file output), then shares its outcome: if it threw, every rank
+  /// throws the same message, so that no rank waits for one that has stopped.
+  void on_rank_zero(const std::function<void()> &write);
 } // namespace servodrift

@@ -143,18 +143,16 @@ namespace servodrift::system
   {
     const SystemResults results = compute(valve, tables_directory(valve));
     write_fits(valve, {results.flow_force_fit});
-    if (mpi_rank() == 0)
-      {
-        for (const auto &w : results.warnings)
-          std::cerr << "servodrift: warning: " << w << std::endl;
-        const std::string dir = valve.output.directory + "/system";
-        prepare_output_directory(dir);
-        write_stage_coefficients(valve, results, dir);
-        write_operating_points(valve, results, dir);
-        write_drift_map(valve, results, dir);
-        const auto plots = write_plots(valve, results, dir + "/plots");
-        write_report(valve, results, plots, valve.output.directory + "/report.md");
-      }
-    mpi_barrier();
+    on_rank_zero([&] {
+      for (const auto &w : results.warnings)
+        std::cerr << "servodrift: warning: " << w << std::endl;
+      const std::string dir = valve.output.directory + "/system";
+      prepare_output_directory(dir);
+      write_stage_coefficients(valve, results, dir);
+      write_operating_points(valve, results, dir);
+      write_drift_map(valve, results, dir);
+      const auto plots = write_plots(valve, results, dir + "/plots");
+      write_report(valve, results, plots, valve.output.directory + "/report.md");
+    });
   }
 } // namespace servodrift::system
