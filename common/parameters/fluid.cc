@@ -39,6 +39,9 @@ namespace servodrift
                       "c in beta_e = beta_e0 (1 - c (T - T0)) (2.8). [1/degC]");
     prm.declare_entry("Vapour pressure", "1e3", Patterns::Double(0, 1e7),
                       "Absolute vapour pressure, for cavitation flags (2.8, C12). [Pa]");
+    prm.declare_entry("Air release pressure", "20e3", Patterns::Double(0, 1e7),
+                      "Absolute pressure below which dissolved air comes out of the oil, 10..30 kPa "
+                      "(2.8), for cavitation flags. [Pa]");
     prm.leave_subsection();
   }
 
@@ -59,6 +62,7 @@ namespace servodrift
     bulk_modulus = prm.get_double("Bulk modulus");
     bulk_modulus_temperature_coefficient = prm.get_double("Bulk modulus temperature coefficient");
     vapour_pressure = prm.get_double("Vapour pressure");
+    air_release_pressure = prm.get_double("Air release pressure");
     prm.leave_subsection();
   }
 } // namespace servodrift

@@ -21,6 +21,7 @@ namespace servodrift
     double bulk_modulus;        ///< beta_e at T0 [Pa]
     double bulk_modulus_temperature_coefficient; ///< beta_e = beta_e0 (1 - c (T - T0)) [1/degC]
     double vapour_pressure;     ///< absolute [Pa]
+    double air_release_pressure; ///< absolute [Pa]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(dealii::ParameterHandler &prm);

@@ -37,6 +37,8 @@ namespace servodrift
                       "Jet angle of the steady flow force (E35). [deg]");
     prm.declare_entry("Radial clearance", "3e-6", Patterns::Double(0, 1e-3),
                       "Radial clearance c_r between spool and sleeve (lap leakage, B_v). [m]");
+    prm.declare_entry("Land length", "12e-3", Patterns::Double(0, 1),
+                      "Length L of the spool's sealing lands; B_v = mu pi d_v L/c_r (2.7; dynamics). [m]");
     prm.declare_entry("Brake volume", "2e-5", Patterns::Double(0, 1),
                       "Volume V_B of brake port, line and brake (E37; dynamics). [m^3]");
     prm.leave_subsection();
@@ -57,6 +59,7 @@ namespace servodrift
     discharge_coefficient = prm.get_double("Discharge coefficient");
     jet_angle = prm.get_double("Jet angle");
     radial_clearance = prm.get_double("Radial clearance");
+    land_length = prm.get_double("Land length");
     brake_volume = prm.get_double("Brake volume");
     prm.leave_subsection();
   }

@@ -20,6 +20,7 @@ namespace servodrift
     double discharge_coefficient; ///< C_dv [1]
     double jet_angle;         ///< [deg]
     double radial_clearance;  ///< c_r [m]
+    double land_length;       ///< L of the sealing lands, for B_v [m]
     double brake_volume;      ///< V_B [m^3]
 
     static void declare_parameters(dealii::ParameterHandler &prm);

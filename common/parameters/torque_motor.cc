@@ -78,6 +78,12 @@ namespace servodrift
                       "circuit: the torque as computed; paper-fit: its secant magnetic spring (C1) "
                       "replaced by the paper's fit E25, K_m = 11.61 - 0.004837 T N*m/rad, clamped to "
                       "40..120 degC and flagged outside that window (C6; paper preset D2). [-]");
+    prm.declare_entry("Coil resistance", "140", Patterns::Double(0, 1e6),
+                      "Resistance of each coil at 20 degC, 80..200 Ohm for RV-1 (2.1); voltage drive "
+                      "L_c di/dt = u - R_c(T) i (1.20; dynamics). [Ohm]");
+    prm.declare_entry("Coil resistance temperature coefficient", "3.93e-3", Patterns::Double(0, 0.1),
+                      "alpha_Cu of the copper coils, R_c(T) = R_c (1 + alpha_Cu (T - 20)) (2.1; dynamics). "
+                      "[1/degC]");
     prm.leave_subsection();
   }
 
@@ -113,6 +119,8 @@ namespace servodrift
     initial_susceptibility = prm.get_double("Initial susceptibility");
     model_depth = prm.get_double("Model depth");
     paper_magnetic_spring = prm.get("Magnetic spring law") == "paper-fit";
+    coil_resistance = prm.get_double("Coil resistance");
+    coil_resistance_temperature_coefficient = prm.get_double("Coil resistance temperature coefficient");
     prm.leave_subsection();
   }
 } // namespace servodrift

@@ -42,6 +42,8 @@ namespace servodrift
     double initial_susceptibility;  ///< chi0 of the 1J50 arctan B-H law [1]
     double model_depth;             ///< w_d of the planar field model (D10) [m]
     bool paper_magnetic_spring;     ///< replace the linear magnetic spring by the paper's fit E25 (D2)
+    double coil_resistance;         ///< per coil at 20 degC (voltage drive, 1.20) [Ohm]
+    double coil_resistance_temperature_coefficient; ///< alpha_Cu [1/degC]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(dealii::ParameterHandler &prm);

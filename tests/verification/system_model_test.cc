@@ -231,3 +231,21 @@ TEST(DriftMap, FlowForceFitE28)
   EXPECT_GT(r.flow_force_fit.r_squared, 0.9999);
   EXPECT_LT(relative(r.flow_force_fit({40}), 5.95e4), 0.005);
 }
+
+TEST(DriftMap, BrakePressureDeviationIsOddToFirstOrder)
+{
+  // At the rated current the operating point itself is not symmetric, so delta p_B(theta_d) is odd
+  // only to first order: its even part (delta(+) + delta(-))/2 is O(theta_d^2), so its ratio to the
+  // odd part must halve when theta_d halves (to 10 %).
+  auto ratio = [](double angle) {
+    const std::string a = std::to_string(angle);
+    const auto v = test::valve({"Offsets/Nulling=as-assembled", "Sweeps/Drift temperatures=40, 120",
+                                "Sweeps/Deviation angles=-" + a + ", 0, " + a});
+    const auto m = system::compute(v, test::write_reduced_order_tables(v)).drift_map;
+    const double plus = m.at(1, 2).brake_pressure_deviation, minus = m.at(1, 0).brake_pressure_deviation;
+    EXPECT_LT(plus * minus, 0.0);
+    return (plus + minus) / (plus - minus);
+  };
+  const double r1 = ratio(0.004), r2 = ratio(0.002);
+  EXPECT_NEAR(r1 / r2, 2.0, 0.2) << r1 << " " << r2;
+}
