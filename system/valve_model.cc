@@ -184,8 +184,9 @@ namespace servodrift::system
     const double lo = o.magnetic_null + angles.front(), hi = o.magnetic_null + angles.back();
     const double b_lo = balance(lo), b_hi = balance(hi);
     if (!(b_lo > 0 && b_hi < 0))
-      throw TableRangeError("nulling at the reference temperature: the armature balance lies outside the "
-                            "torque_motor table's angles (extend `Sweeps/Motor angles')");
+      throw TableRangeError("nulling at the reference temperature: K_a (theta - theta_s) = T_em(theta - theta_m) "
+                            "has no root within the torque_motor table's angles (extend `Sweeps/Motor angles'; "
+                            "a root also needs K_a > K_m)");
     return r * find_root(balance, lo, hi, b_lo, b_hi, 1e-13 * (hi - lo), "null adjustment at T0");
   }
 
