@@ -13,7 +13,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
 #include <chrono>
+#include <cstdlib>
 #include <iostream>
 
 namespace
@@ -26,6 +29,7 @@ namespace
     std::vector<std::string> overrides;
     std::string output;
     std::string format = "prm";
+    bool calibrate = false, convergence = false;
   };
 
   void add_common_options(CLI::App *command, Options &o)
@@ -87,6 +91,10 @@ namespace
     auto *system = app.add_subcommand("system", "system model alone, from the tables already in <output>/tables");
     for (auto *c : {run, magnetics, structure, flow, system})
       add_common_options(c, o);
+    magnetics->add_flag("--calibrate", o.calibrate,
+                        "C10: calibrate the field model's equivalent magnet width at T0 against the circuit");
+    magnetics->add_flag("--convergence", o.convergence,
+                        "field model: mesh convergence and outer-boundary study at T0 (magnetics/*.csv)");
     params->add_option("input", o.input, "valve description (.prm or .json); default: the built-in RV-1");
     params->add_option("--set", o.overrides, "override one entry, \"Subsection/Key=value\" (repeatable)")->take_all();
     params->add_option("--format", o.format, "prm (default), json or markdown")
@@ -127,6 +135,14 @@ namespace
         say("results: " + valve.output.directory + "/report.md, " + valve.output.directory + "/tables/, " +
             valve.output.directory + "/system/");
       }
+    else if (magnetics->parsed() && (o.calibrate || o.convergence))
+      {
+        if (o.calibrate)
+          timed("magnetics: C10 calibration", [&] { magnetics::calibrate(valve); });
+        if (o.convergence)
+          timed("magnetics: convergence study", [&] { magnetics::convergence_study(valve); });
+        say("results: " + valve.output.directory + "/magnetics/");
+      }
     else if (magnetics->parsed() || structure->parsed() || flow->parsed())
       {
         if (magnetics->parsed())
@@ -157,6 +173,15 @@ namespace
 
 int main(int argc, char **argv)
 {
+  // One thread per process: sweeps scale over MPI ranks, and OpenMP threads would only compete with
+  // them. CHOLMOD's supernodal factorisation asks for teams of a compiled-in 4 threads, which only
+  // OMP_THREAD_LIMIT caps, and libgomp reads it when it is loaded, before main: so restart once with
+  // the limit set (before MPI is initialised). A user's own OMP_THREAD_LIMIT is kept.
+  if (!std::getenv("OMP_THREAD_LIMIT"))
+    {
+      setenv("OMP_THREAD_LIMIT", "1", 1);
+      execv("/proc/self/exe", argv); // returns only on failure: then run with the threads
+    }
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {

@@ -21,3 +21,14 @@ function(servodrift_module name)
   target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
   target_link_libraries(${name} PUBLIC ${ARG_LIBS})
 endfunction()
+
+# servodrift_embed(target NAME file): compiles the text of `file' into `target' as
+# servodrift::embedded::NAME (regenerated when the file changes).
+function(servodrift_embed target name file)
+  set(out ${CMAKE_CURRENT_BINARY_DIR}/embedded_${name}.cc)
+  add_custom_command(OUTPUT ${out}
+    COMMAND ${CMAKE_COMMAND} -DINPUT=${file} -DOUTPUT=${out} -DNAME=${name} -P ${PROJECT_SOURCE_DIR}/cmake/EmbedText.cmake
+    DEPENDS ${file} ${PROJECT_SOURCE_DIR}/cmake/EmbedText.cmake
+    COMMENT "embedding ${file}")
+  target_sources(${target} PRIVATE ${out})
+endfunction()

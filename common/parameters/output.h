@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <string>
 #include <vector>
 namespace dealii { class ParameterHandler; }
@@ -15,6 +16,10 @@ namespace servodrift
     std::vector<std::string> plot_formats; ///< "png", "svg"
     enum class Progress { automatic, lines, none };
     Progress progress;
+    /// Field-level cases whose fields are written as VTU: (temperature [degC], angle [rad],
+    /// current [A]) of the torque-motor sweep; `all_field_cases' writes every case.
+    std::vector<std::array<double, 3>> magnetics_field_cases;
+    bool all_magnetics_fields;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(dealii::ParameterHandler &prm);

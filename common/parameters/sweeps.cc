@@ -15,15 +15,14 @@ namespace servodrift
                       "Temperatures at which every stage writes its coefficient table (D3); strictly "
                       "increasing, inside the fluid's viscosity-law window. [degC]");
     prm.declare_entry("Motor angles",
-                      "-0.5, -0.45, -0.4, -0.35, -0.3, -0.25, -0.2, -0.15, -0.1, -0.05, 0, 0.05, 0.1, "
-                      "0.15, 0.2, 0.25, 0.3, 0.35, 0.4, 0.45, 0.5",
+                      "-0.2, -0.15, -0.1, -0.05, 0, 0.05, 0.1, 0.15, 0.2",
                       double_list(-10, 10, 2),
                       "Armature angles of the torque_motor table, strictly increasing; they must cover "
-                      "the flapper travel +-x0/r plus the magnetic-null offsets of the drift map, and "
-                      "include +-0.1 deg for the secant K_m (C1). [deg]");
+                      "the armature angles of the drift map's operating points (a query beyond them "
+                      "stops the system model, naming this entry) and include +-0.1 deg for the secant "
+                      "K_m (C1). [deg]");
     prm.declare_entry("Motor currents",
-                      "-0.03, -0.025, -0.02, -0.015, -0.01, -0.005, 0, 0.005, 0.01, 0.015, 0.02, 0.025, "
-                      "0.03",
+                      "-0.02, -0.01, 0, 0.01, 0.02",
                       double_list(-10, 10, 2),
                       "Differential coil currents of the torque_motor table, strictly increasing; must "
                       "include 0 and the rated current. [A]");

@@ -9,9 +9,10 @@ namespace servodrift
   void TorqueMotorParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection(subsection);
-    prm.declare_entry("Model level", "reduced-order", Patterns::Selection("reduced-order"),
-                      "Which model computes the torque_motor table: 'reduced-order' is the four-mesh "
-                      "magnetic circuit E3 with E6-E10 (D13). [-]");
+    prm.declare_entry("Model level", "reduced-order", Patterns::Selection("reduced-order|field"),
+                      "Which model computes the torque_motor table (D13): field, the planar FEM of "
+                      "D10 (magnetics/, meshes/torque_motor.geo); reduced-order, the four-mesh magnetic "
+                      "circuit E3 with E6-E10. [-]");
     prm.declare_entry("Turns per coil", "1100", Patterns::Integer(1, 1000000),
                       "Turns N_c of each of the two coils, one per armature arm (2.1). [1]");
     prm.declare_entry("Coil connection", "push-pull", Patterns::Selection("push-pull|series-aiding"),
@@ -78,6 +79,39 @@ namespace servodrift
                       "circuit: the torque as computed; paper-fit: its secant magnetic spring (C1) "
                       "replaced by the paper's fit E25, K_m = 11.61 - 0.004837 T N*m/rad, clamped to "
                       "40..120 degC and flagged outside that window (C6; paper preset D2). [-]");
+    prm.declare_entry("Field element degree", "1", Patterns::Integer(1, 2),
+                      "Degree of the FE_Q elements of A_z in the field model. [1]");
+    prm.declare_entry("Field mesh resolution", "1", Patterns::Double(0.1, 16),
+                      "Scales the field model's mesh: element sizes / resolution, gap layers x "
+                      "resolution. [1]");
+    prm.declare_entry("Field gap layers", "8", Patterns::Integer(2, 200),
+                      "Element layers across each working gap at resolution 1 (at least 8, issue 3). [1]");
+    prm.declare_entry("Field magnet width", "6.25e-3", Patterns::Double(0, 0.1),
+                      "In-plane width of each equivalent magnet block at T0 (D10, 4.1: A_m/w_d = 6.25 mm "
+                      "uncalibrated; C10 calibrates it so that the mean gap flux density at null matches "
+                      "the circuit's, `servodrift magnetics --calibrate'). [m]");
+    prm.declare_entry("Field magnet clearance", "2.2e-3", Patterns::Double(0, 0.1),
+                      "Distance from the outer edge of the pole tips to the magnet blocks (field model). "
+                      "[m]");
+    prm.declare_entry("Upper plate thickness", "3.0e-3", Patterns::Double(0, 0.1),
+                      "Thickness of the upper pole plate above the magnet seat (field model). [m]");
+    prm.declare_entry("Coil inner position", "3.0e-3", Patterns::Double(0, 0.1),
+                      "Coil window of the field model: from this distance from the pivot ... [m]");
+    prm.declare_entry("Coil outer position", "11.0e-3", Patterns::Double(0, 0.1),
+                      "... to this one, short of the pole tips (field model). [m]");
+    prm.declare_entry("Coil height", "2.0e-3", Patterns::Double(0, 0.1),
+                      "Height of each of the coil's two current regions above and below the arm; "
+                      "J = (net MMF/2)/(window area) per arm (field model). [m]");
+    prm.declare_entry("Coil clearance", "0.2e-3", Patterns::Double(0, 0.1),
+                      "Gap between the armature and the coil regions (field model). [m]");
+    prm.declare_entry("Air boundary radius", "0.3", Patterns::Double(0, 10),
+                      "Radius of the air domain around the pivot; A_z = 0 on it (field model). [m]");
+    prm.declare_entry("Virtual work step", "0.01", Patterns::Double(1e-6, 1),
+                      "Angle step of the coenergy central differences of the virtual-work torque (4.1 "
+                      "item 3). [deg]");
+    prm.declare_entry("Newton tolerance", "1e-10", Patterns::Double(1e-15, 1e-2),
+                      "Newton stops when the residual has fallen by this factor from its value at "
+                      "A_z = 0 (field model). [1]");
     prm.declare_entry("Coil resistance", "140", Patterns::Double(0, 1e6),
                       "Resistance of each coil at 20 degC, 80..200 Ohm for RV-1 (2.1); voltage drive "
                       "L_c di/dt = u - R_c(T) i (1.20; dynamics). [Ohm]");
@@ -119,6 +153,19 @@ namespace servodrift
     initial_susceptibility = prm.get_double("Initial susceptibility");
     model_depth = prm.get_double("Model depth");
     paper_magnetic_spring = prm.get("Magnetic spring law") == "paper-fit";
+    field_element_degree = prm.get_integer("Field element degree");
+    field_mesh_resolution = prm.get_double("Field mesh resolution");
+    field_gap_layers = prm.get_integer("Field gap layers");
+    field_magnet_width = prm.get_double("Field magnet width");
+    field_magnet_clearance = prm.get_double("Field magnet clearance");
+    upper_plate_thickness = prm.get_double("Upper plate thickness");
+    coil_inner_position = prm.get_double("Coil inner position");
+    coil_outer_position = prm.get_double("Coil outer position");
+    coil_height = prm.get_double("Coil height");
+    coil_clearance = prm.get_double("Coil clearance");
+    air_boundary_radius = prm.get_double("Air boundary radius");
+    virtual_work_step = prm.get_double("Virtual work step") * 3.14159265358979323846 / 180;
+    newton_tolerance = prm.get_double("Newton tolerance");
     coil_resistance = prm.get_double("Coil resistance");
     coil_resistance_temperature_coefficient = prm.get_double("Coil resistance temperature coefficient");
     prm.leave_subsection();

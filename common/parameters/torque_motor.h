@@ -42,6 +42,20 @@ namespace servodrift
     double initial_susceptibility;  ///< chi0 of the 1J50 arctan B-H law [1]
     double model_depth;             ///< w_d of the planar field model (D10) [m]
     bool paper_magnetic_spring;     ///< replace the linear magnetic spring by the paper's fit E25 (D2)
+    // planar field model (D10, model.md 4.1; meshes/torque_motor.geo)
+    unsigned int field_element_degree;   ///< FE_Q degree of A_z (1 or 2)
+    double field_mesh_resolution;        ///< scales every element size by 1/resolution [1]
+    unsigned int field_gap_layers;       ///< element layers across each working gap at resolution 1
+    double field_magnet_width;           ///< in-plane width of each equivalent magnet block at T0 [m]
+    double field_magnet_clearance;       ///< pole-tip outer edge to magnet block [m]
+    double upper_plate_thickness;        ///< [m]
+    double coil_inner_position;          ///< coil window from x = ... [m]
+    double coil_outer_position;          ///< ... to x = ... [m]
+    double coil_height;                  ///< [m]
+    double coil_clearance;               ///< coil to armature [m]
+    double air_boundary_radius;          ///< A_z = 0 on this circle [m]
+    double virtual_work_step;            ///< angle step of the coenergy differences [rad]
+    double newton_tolerance;             ///< residual reduction [1]
     double coil_resistance;         ///< per coil at 20 degC (voltage drive, 1.20) [Ohm]
     double coil_resistance_temperature_coefficient; ///< alpha_Cu [1/degC]
 

@@ -1,0 +1,63 @@
+#pragma once
+// Field level of the torque motor (model.md 4.1, D10): the planar FEM model of meshes/torque_motor.geo
+// at one temperature, with torque by the weighted Maxwell stress tensor and by virtual work.
+#include "common/valve_description.h"
+#include "magnetics/magnetostatic_problem.h"
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace servodrift::magnetics
+{
+  /// Material ids of the torque-motor mesh
+  namespace torque_motor_material
+  {
+    constexpr int armature = 1, pole_pieces = 2, magnet = 3, coil_upper_right = 4, coil_lower_right = 5, air = 6,
+                  air_gap = 7, coil_upper_left = 8, coil_lower_left = 9;
+  }
+
+  struct FieldTorque
+  {
+    double stress_tensor;      ///< weighted Maxwell stress tensor [N*m]
+    double virtual_work;       ///< coenergy difference at constant current [N*m]
+    NewtonStatistics newton;   ///< of the solve at the case itself
+  };
+
+  class TorqueMotorFieldModel
+  {
+  public:
+    /// Meshes the motor with its dimensions at T (E6-E8, thermal growth of each part) and sets up
+    /// the FE problem. `resolution' overrides `Torque motor/Field mesh resolution' if > 0;
+    /// `refinements' refines the mesh globally (nested meshes for convergence studies).
+    /// `adjust_materials' may change the materials before the problem is set up (verification
+    /// studies: linear iron, stronger magnets).
+    TorqueMotorFieldModel(const ValveDescription &valve, double temperature, double resolution = 0,
+                          unsigned int refinements = 0,
+                          const std::function<void(std::map<int, Material> &)> &adjust_materials = {});
+
+    /// Torque at armature angle theta [rad] and differential current i [A]; the previous solution
+    /// is the Newton start. With `virtual_work' false the second method is skipped (NaN).
+    FieldTorque torque(double angle, double current, bool virtual_work = true);
+
+    /// Mean |B_y| over the four working gaps of the last solution [T] (C10 calibration measure).
+    double mean_gap_flux_density() const;
+    /// Largest |B| in the armature of the last solution [T].
+    double max_armature_flux_density() const;
+
+    MagnetostaticProblem &problem() { return *fe; }
+    unsigned int n_dofs() const { return fe->n_dofs(); }
+
+  private:
+    const ValveDescription &valve;
+    double temperature;
+    std::unique_ptr<MagnetostaticProblem> fe;
+  };
+
+  /// The geometry parameters of meshes/torque_motor.geo at temperature T [mm], and the
+  /// current-density scale of the coils [A/m^2 per A]; throws InputError for an impossible
+  /// geometry (overlapping parts, closed gaps), naming the parameter.
+  std::map<std::string, double> torque_motor_geometry_parameters(const ValveDescription &valve, double T,
+                                                                 double resolution);
+} // namespace servodrift::magnetics
