@@ -10,6 +10,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -108,11 +109,27 @@ namespace servodrift
     }
 
     PolynomialFit general_fit(const Table &t, const char *response, std::initializer_list<const char *> variables,
-                              const std::vector<int> &degrees,
-                              const std::function<bool(const std::vector<double> &)> &keep)
+                              std::vector<int> degrees, const std::function<bool(const std::vector<double> &)> &keep)
     {
-      PolynomialFit f = fit_polynomial(axes_of(t, variables, keep), values_of(t, response, keep),
-                                       full_polynomial_exponents(degrees));
+      // A variable with n distinct values in the table supports powers up to n - 1 only
+      const auto points = axes_of(t, variables, keep);
+      std::string capped;
+      for (std::size_t j = 0; j < degrees.size(); ++j)
+        {
+          std::vector<double> values;
+          for (const auto &p : points)
+            values.push_back(p[j]);
+          std::sort(values.begin(), values.end());
+          const int distinct = static_cast<int>(std::unique(values.begin(), values.end()) - values.begin());
+          if (degrees[j] > distinct - 1)
+            {
+              degrees[j] = std::max(0, distinct - 1);
+              capped += std::string(capped.empty() ? "" : ", ") + *(variables.begin() + j) + " to " + std::to_string(degrees[j]);
+            }
+        }
+      PolynomialFit f = fit_polynomial(points, values_of(t, response, keep), full_polynomial_exponents(degrees));
+      if (!capped.empty())
+        f.note = "degree capped by the table's points: " + capped;
       f.name = std::string("full polynomial ") + response;
       f.source = t.name() + ".csv";
       f.response = t.schema().columns[t.column_index(response)].header();

@@ -444,20 +444,59 @@ namespace servodrift
           refuse("Torque motor/Armature height",
                  "gives a closed upper gap g_34 = H_c' + H_m - h_p - H_a - H_ar/2 = " + format_number(g.upper_gap) +
                    " m at " + format_number(T) + " degC (E7); it must be > 0");
-        const double closing = g.pivot_to_pole_distance * max_angle;
+        // the armature's tip, at the outer edge of the pole faces (or its own end), must not touch
+        const double tip = std::max(g.pivot_to_pole_distance + 0.5 * g.pole_face_length,
+                                    laws::expanded(tm.armature_length / 2, v.expansion.armature, T, op.reference_temperature));
+        const double closing = tip * max_angle;
         const double gap = std::min(g.lower_gap, g.upper_gap);
         if (!(closing < 0.95 * gap))
           refuse("Sweeps/Motor angles",
                  "reach " + format_number(max_angle / units::degree) + " deg, where the armature tip moves " +
                    format_number(closing) + " m of a " + format_number(gap) + " m gap at " + format_number(T) +
-                   " degC; keep |angle| below " + format_number(0.95 * gap / g.pivot_to_pole_distance / units::degree) +
-                   " deg");
+                   " degC; keep |angle| below " + format_number(0.95 * gap / tip / units::degree) + " deg");
       }
     if (!(sw.motor_angles.front() <= -0.1 * units::degree && sw.motor_angles.back() >= 0.1 * units::degree))
       refuse("Sweeps/Motor angles", "must cover -0.1..0.1 deg, where the secant K_m is evaluated (C1)");
     const double i_rated = op.rated_current;
     if (!(sw.motor_currents.front() <= -i_rated && sw.motor_currents.back() >= i_rated))
       refuse("Sweeps/Motor currents", "must cover -rated..rated current, +-" + format_number(i_rated) + " A");
+
+    // Field model of the torque motor (meshes/torque_motor.geo): parts must not overlap
+    if (tm.model_level == "field")
+      {
+        const std::string field = " (field model, meshes/torque_motor.geo)";
+        const double pole_tip_start = tm.pivot_to_pole_distance - 0.5 * tm.pole_face_length;
+        if (!(tm.coil_height > 0))
+          refuse("Torque motor/Coil height", "= " + format_number(tm.coil_height) + " m must be > 0: the coil's current "
+                                             "density region needs an area" + field);
+        if (!(tm.coil_clearance > 0))
+          refuse("Torque motor/Coil clearance", "must be > 0: the coil may not touch the moving armature" + field);
+        if (!(tm.coil_inner_position < tm.coil_outer_position))
+          refuse("Torque motor/Coil inner position", "= " + format_number(tm.coil_inner_position) +
+                                                       " m must be below `Torque motor/Coil outer position' = " +
+                                                       format_number(tm.coil_outer_position) + " m" + field);
+        if (!(tm.coil_outer_position < pole_tip_start))
+          refuse("Torque motor/Coil outer position", "= " + format_number(tm.coil_outer_position) +
+                                                       " m reaches the pole tips, which start at " +
+                                                       format_number(pole_tip_start) + " m" + field);
+        const double upper_plate = tm.upper_pole_thickness + tm.magnet_length - tm.armature_height;
+        const double lower_plate = tm.upper_pole_thickness - tm.armature_height;
+        const double coil_reach = 0.5 * tm.armature_thickness + tm.coil_clearance + tm.coil_height;
+        if (!(coil_reach < upper_plate && -coil_reach > lower_plate))
+          refuse("Torque motor/Coil height", "= " + format_number(tm.coil_height) +
+                                               " m makes a coil region reach a pole plate" + field);
+        if (!(tm.field_magnet_clearance > 0.5 * tm.armature_length - tm.pivot_to_pole_distance - 0.5 * tm.pole_face_length))
+          refuse("Torque motor/Field magnet clearance", "puts the magnet blocks over the armature's tip" + field);
+        if (!(tm.field_magnet_width > 0))
+          refuse("Torque motor/Field magnet width", "must be > 0" + field);
+        const double half_size = std::max(tm.pivot_to_pole_distance + 0.5 * tm.pole_face_length + tm.field_magnet_clearance +
+                                            tm.field_magnet_width,
+                                          tm.armature_height + tm.upper_plate_thickness);
+        if (!(tm.air_boundary_radius > 1.5 * half_size))
+          refuse("Torque motor/Air boundary radius", "= " + format_number(tm.air_boundary_radius) +
+                                                       " m must enclose the motor with room, at least " +
+                                                       format_number(1.5 * half_size) + " m" + field);
+      }
 
     // Spring tube
     const auto &st = v.spring_tube;

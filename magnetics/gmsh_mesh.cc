@@ -24,9 +24,14 @@ namespace servodrift::magnetics
         gmsh::option::setNumber("General.Verbosity", 1);
         gmsh::option::setNumber("General.NumThreads", 1);
         gmsh::option::setNumber("Mesh.MaxNumThreads2D", 1);
+        gmsh::onelab::clear(); // no parameter of an earlier template may leak into this one
         gmsh::logger::start();
       }
-      ~GmshSession() { gmsh::finalize(); }
+      ~GmshSession()
+      {
+        gmsh::logger::stop();
+        gmsh::finalize();
+      }
       std::string last_errors()
       {
         std::vector<std::string> log;
@@ -103,9 +108,13 @@ namespace servodrift::magnetics
       throw std::runtime_error(geo.name + ": no physical group `" + name + "'");
     };
 
+    std::map<int, std::string> owner; // every surface in one material group only
     for (const auto &[name, material] : materials)
       for (int entity : physical(2, name))
         {
+          if (!owner.emplace(entity, name).second)
+            throw std::runtime_error(geo.name + ": surface " + std::to_string(entity) + " is in both `" + owner[entity] +
+                                     "' and `" + name + "'");
           std::vector<std::size_t> element_tags, element_nodes;
           gmsh::model::mesh::getElementsByType(3, element_tags, element_nodes, entity);
           for (std::size_t e = 0; e < element_tags.size(); ++e)

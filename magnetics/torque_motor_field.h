@@ -55,9 +55,8 @@ namespace servodrift::magnetics
     std::unique_ptr<MagnetostaticProblem> fe;
   };
 
-  /// The geometry parameters of meshes/torque_motor.geo at temperature T [mm], and the
-  /// current-density scale of the coils [A/m^2 per A]; throws InputError for an impossible
-  /// geometry (overlapping parts, closed gaps), naming the parameter.
+  /// The geometry parameters of meshes/torque_motor.geo at temperature T [mm] (the parts were checked
+  /// against each other by validate()).
   std::map<std::string, double> torque_motor_geometry_parameters(const ValveDescription &valve, double T,
                                                                  double resolution);
 } // namespace servodrift::magnetics

@@ -9,7 +9,7 @@ namespace servodrift
   void TorqueMotorParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection(subsection);
-    prm.declare_entry("Model level", "reduced-order", Patterns::Selection("reduced-order|field"),
+    prm.declare_entry("Model level", "field", Patterns::Selection("reduced-order|field"),
                       "Which model computes the torque_motor table (D13): field, the planar FEM of "
                       "D10 (magnetics/, meshes/torque_motor.geo); reduced-order, the four-mesh magnetic "
                       "circuit E3 with E6-E10. [-]");
@@ -86,10 +86,11 @@ namespace servodrift
                       "resolution. [1]");
     prm.declare_entry("Field gap layers", "8", Patterns::Integer(2, 200),
                       "Element layers across each working gap at resolution 1 (at least 8, issue 3). [1]");
-    prm.declare_entry("Field magnet width", "6.25e-3", Patterns::Double(0, 0.1),
-                      "In-plane width of each equivalent magnet block at T0 (D10, 4.1: A_m/w_d = 6.25 mm "
-                      "uncalibrated; C10 calibrates it so that the mean gap flux density at null matches "
-                      "the circuit's, `servodrift magnetics --calibrate'). [m]");
+    prm.declare_entry("Field magnet width", "4.852e-3", Patterns::Double(0, 0.1),
+                      "In-plane width of each equivalent magnet block at T0 (D10): RV-1's value is "
+                      "calibrated (C10, `servodrift magnetics --calibrate') so that the field model's mean "
+                      "working-gap flux density at null equals the circuit's 0.549 T; uncalibrated, "
+                      "A_m/w_d = 6.25 mm (4.1). [m]");
     prm.declare_entry("Field magnet clearance", "2.2e-3", Patterns::Double(0, 0.1),
                       "Distance from the outer edge of the pole tips to the magnet blocks (field model). "
                       "[m]");

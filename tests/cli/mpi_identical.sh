@@ -4,7 +4,10 @@ set -eu
 servodrift=$1 mpirun=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-sets=(--set "Output/Plots=false" --set "Sweeps/Drift temperatures=40, 60, 80, 100, 120"
+# the field-level torque motor on a coarse mesh, two temperatures
+sets=(--set "Output/Plots=false" --set "Torque motor/Field mesh resolution=0.5"
+      --set "Sweeps/Table temperatures=40, 120" --set "Sweeps/Drift temperatures=40, 80, 120"
+      --set "Sweeps/Motor currents=-0.02, 0, 0.02"
       --set "Sweeps/Deviation angles=-0.05, -0.02, 0, 0.02, 0.05")
 "$servodrift" run "${sets[@]}" -o "$work/serial" > /dev/null
 "$mpirun" -np 2 "$servodrift" run "${sets[@]}" -o "$work/mpi" > "$work/mpi.log" 2>&1 || { cat "$work/mpi.log"; exit 1; }

@@ -22,6 +22,8 @@ namespace servodrift::test
 
   ValveDescription valve(std::vector<std::string> overrides)
   {
+    // the reduced-order torque motor unless a test asks for the field level (seconds, not minutes)
+    overrides.insert(overrides.begin(), "Torque motor/Model level=reduced-order");
     overrides.push_back("Output/Directory=" + temporary_directory());
     overrides.push_back("Output/Progress=none");
     return load_valve_description("", overrides);

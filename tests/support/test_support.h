@@ -8,7 +8,8 @@
 
 namespace servodrift::test
 {
-  /// RV-1 with overrides ("Subsection/Key=value"); output into a fresh temporary directory.
+  /// RV-1 with overrides ("Subsection/Key=value"); output into a fresh temporary directory. The
+  /// torque motor is at its reduced-order level unless the overrides say otherwise.
   ValveDescription valve(std::vector<std::string> overrides = {});
   /// Runs the three reduced-order stages for `valve' (into valve.output.directory) and returns
   /// the tables directory.

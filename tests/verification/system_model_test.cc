@@ -30,9 +30,11 @@ namespace
     {}
   };
 
+  /// RV-1 with a torque table that reaches the nozzle contacts (0.23 deg) and beyond, so that
+  /// saturated operating points stay inside the tables
   const Valve &rv1()
   {
-    static const Valve v({});
+    static const Valve v({"Sweeps/Motor angles=-0.4, -0.3, -0.2, -0.15, -0.1, -0.05, 0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4"});
     return v;
   }
 } // namespace

@@ -1,0 +1,193 @@
+// The field-level magnetostatics (deal.II A_z) against closed forms, symmetry, the circuit (model.md
+// 2.2, C10) and the paper's temperature trend; Newton in saturation; bad geometry.
+#include "common/error.h"
+#include "common/output_files.h"
+#include "common/units.h"
+#include "magnetics/gmsh_mesh.h"
+#include "magnetics/magnetostatic_problem.h"
+#include "magnetics/reduced_order_circuit.h"
+#include "magnetics/torque_motor_field.h"
+#include "tests/support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace servodrift;
+using namespace servodrift::magnetics;
+using test::relative;
+using units::mu0;
+
+namespace
+{
+  GmshTemplate test_geometry(const std::string &name)
+  {
+    return {name, read_file(std::string(SERVODRIFT_SOURCE_DIR) + "/tests/verification/meshes/" + name), 1e-3};
+  }
+
+  const double tenth = 0.1 * units::degree;
+
+  /// RV-1 on a coarse mesh (resolution 0.5: 8 thousand unknowns), as the tests use it
+  ValveDescription coarse_rv1(std::vector<std::string> more = {})
+  {
+    more.push_back("Torque motor/Field mesh resolution=0.5");
+    return test::valve(more);
+  }
+} // namespace
+
+TEST(MagnetostaticsVerification, CCoreGapFieldAndPoleForce)
+{
+  // Ideal iron (mu_r = 1e5: the iron path adds 0.1 % to the two 0.2 mm gaps), gaps 0.2 mm under
+  // 10 mm legs (fringing of order g/w = 2 %): B_gap = mu0 N I/(2g), F = 2 B^2 A/(2 mu0), within 2 %.
+  const PlanarMesh mesh = mesh_template(test_geometry("c_core.geo"), {{"g", 0.2}, {"w", 10}, {"R", 200}, {"hgap", 0.25}},
+                                        {{"core", 1}, {"keeper", 2}, {"gap_left", 3}, {"gap_right", 7}, {"coil_in", 4}, {"coil_out", 5}, {"air", 6}},
+                                        {{"outer", 1}}, false);
+  const double NI = 100, coil_area = 24e-3 * 6e-3, depth = 0.01, g = 0.2e-3, A = 10e-3 * depth;
+  std::map<int, Material> materials;
+  Material iron;
+  iron.kind = Material::Kind::linear;
+  iron.relative_permeability = 1e5;
+  materials[1] = iron;
+  iron.moving = true;
+  materials[2] = iron;
+  Material air;
+  air.morphing = true;
+  materials[3] = air;
+  materials[6] = air;
+  materials[7] = air;
+  Material coil;
+  coil.current_density = NI / coil_area;
+  materials[4] = coil;
+  coil.current_density = -NI / coil_area;
+  materials[5] = coil;
+  Motion up;
+  up.kind = Motion::Kind::translation;
+  up.direction = {0, 1};
+  MagnetostaticProblem problem(mesh, materials, up, 2, depth);
+  const auto stats = problem.solve(1.0);
+  EXPECT_LE(stats.iterations, 2u); // linear: one Newton step is the exact solution
+  const double B_ideal = mu0 * NI / (2 * g);
+  // the flux crosses one gap upwards and the other downwards
+  for (int gap : {3, 7})
+    {
+      const double B_gap = std::abs(problem.mean_flux_density(gap, 1));
+      EXPECT_LT(relative(B_gap, B_ideal), 0.02) << B_gap << " T vs " << B_ideal << " T";
+    }
+  EXPECT_LT(problem.mean_flux_density(3, 1) * problem.mean_flux_density(7, 1), 0);
+  const double F_ideal = 2 * B_ideal * B_ideal * A / (2 * mu0);
+  const double F = problem.stress_tensor_force(); // attraction: towards the core, -y
+  EXPECT_LT(F, 0);
+  EXPECT_LT(relative(-F, F_ideal), 0.02) << -F << " N vs " << F_ideal << " N";
+  // virtual work: the same force from the coenergy (1 %)
+  EXPECT_LT(relative(problem.virtual_work_force(1e-6), F), 0.01);
+}
+
+TEST(MagnetostaticsVerification, UniformlyMagnetisedCylinder)
+{
+  // An infinite cylinder magnetised across its axis, mu_r = 1: inside, B = B_r/2 exactly. The outer
+  // boundary at 30 radii truncates the dipole field by (1/30)^2 = 0.1 %; tolerance 1 %.
+  const PlanarMesh mesh = mesh_template(test_geometry("cylinder.geo"), {{"a", 5}, {"R", 150}, {"h", 0.4}},
+                                        {{"magnet", 1}, {"air", 2}}, {{"outer", 1}}, false);
+  Material magnet;
+  magnet.kind = Material::Kind::magnet;
+  magnet.remanence = {1.0, 0.0};
+  Material air;
+  air.morphing = true;
+  MagnetostaticProblem problem(mesh, {{1, magnet}, {2, air}}, Motion{}, 2, 1.0);
+  problem.solve(0.0);
+  EXPECT_LT(relative(problem.mean_flux_density(1, 0), 0.5), 0.01) << problem.mean_flux_density(1, 0);
+  EXPECT_LT(std::abs(problem.mean_flux_density(1, 1)), 1e-3);
+}
+
+TEST(TorqueMotorField, LinearArmatureDoublingCurrentDoublesTorque)
+{
+  // Linear iron, theta = 0: T = K_t i exactly (the magnets' and the coils' own torques vanish by
+  // symmetry), so doubling the current doubles the torque to the solver's precision (1e-6).
+  const auto v = coarse_rv1();
+  TorqueMotorFieldModel model(v, 40, 0, 0, [](std::map<int, Material> &m) {
+    for (int id : {torque_motor_material::armature, torque_motor_material::pole_pieces})
+      {
+        m[id].kind = Material::Kind::linear;
+        m[id].relative_permeability = 1e4;
+      }
+  });
+  const double t1 = model.torque(0, 0.005, false).stress_tensor, t2 = model.torque(0, 0.010, false).stress_tensor;
+  EXPECT_LT(std::abs(t2 - 2 * t1), 1e-6 * std::abs(t2)) << t1 << " " << t2;
+}
+
+TEST(TorqueMotorField, RV1SymmetryMethodsAndCircuit)
+{
+  const auto v = coarse_rv1();
+  TorqueMotorFieldModel model(v, 40);
+  // odd in theta at i = 0 on the mirrored mesh (1e-8), and T(0, -i) = -T(0, i)
+  const auto plus = model.torque(tenth, 0), minus = model.torque(-tenth, 0);
+  EXPECT_LT(std::abs(plus.stress_tensor + minus.stress_tensor), 1e-8 * plus.stress_tensor);
+  const auto ip = model.torque(0, 0.02), im = model.torque(0, -0.02);
+  EXPECT_LT(std::abs(ip.stress_tensor + im.stress_tensor), 1e-8 * ip.stress_tensor);
+  EXPECT_GT(ip.stress_tensor, 0); // positive current gives positive torque, as in E3
+  // the two torque methods agree within 1 %
+  for (const FieldTorque *t : {&plus, &minus, &ip, &im})
+    EXPECT_LT(relative(t->virtual_work, t->stress_tensor), 0.01);
+  const auto both = model.torque(0.15 * units::degree, -0.01);
+  EXPECT_LT(relative(both.virtual_work, both.stress_tensor), 0.01);
+  // calibrated (C10): the field's K_m and K_t within 15 % of the circuit's
+  const ReducedOrderCircuit circuit(v, 40);
+  EXPECT_LT(relative(plus.stress_tensor, circuit.torque(tenth, 0)), 0.15);
+  EXPECT_LT(relative((ip.stress_tensor - im.stress_tensor) / 0.04, (circuit.torque(0, 0.02) - circuit.torque(0, -0.02)) / 0.04),
+            0.15);
+  model.torque(0, 0, false);
+  EXPECT_LT(relative(model.mean_gap_flux_density(), 0.5495), 0.02); // the calibration target, on this coarse mesh
+}
+
+TEST(TorqueMotorField, TemperatureTrendOfThePaper)
+{
+  // [K22] Fig. 7: the torque at 0.1 deg falls by about 4-5 % from 40 to 120 degC (B_r(T), E8, and the
+  // thermal growth of the gaps, E6-E7); RV-1's circuit gives -4.28 %.
+  const auto v = coarse_rv1();
+  TorqueMotorFieldModel cold(v, 40), hot(v, 120);
+  const double change = hot.torque(tenth, 0, false).stress_tensor / cold.torque(tenth, 0, false).stress_tensor - 1;
+  EXPECT_LT(change, -0.035);
+  EXPECT_GT(change, -0.055);
+}
+
+TEST(TorqueMotorField, NewtonConvergesInSaturation)
+{
+  // Magnets four times as strong saturate the 1J50 (J_s = 1.5 T): Newton still reduces the residual
+  // by 1e-10, and the torque stops growing like B_r^2 (16x) and linearly in the current.
+  const auto v = coarse_rv1();
+  auto stronger = [](double factor) {
+    return [factor](std::map<int, Material> &m) { m[torque_motor_material::magnet].remanence[1] *= factor; };
+  };
+  TorqueMotorFieldModel normal(v, 40), strong(v, 40, 0, 0, stronger(4));
+  const auto t_strong = strong.torque(tenth, 0, false);
+  EXPECT_LE(t_strong.newton.final_residual, 1e-10 * t_strong.newton.initial_residual);
+  EXPECT_GT(strong.max_armature_flux_density(), 1.5);
+  const double growth = t_strong.stress_tensor / normal.torque(tenth, 0, false).stress_tensor;
+  EXPECT_LT(growth, 0.8 * 16) << growth;
+  // current: linear when unsaturated (to 1e-3 with the nonlinear iron), clearly not in saturation
+  const double n1 = normal.torque(0, 0.01, false).stress_tensor, n2 = normal.torque(0, 0.02, false).stress_tensor;
+  const double s1 = strong.torque(0, 0.01, false).stress_tensor, s2 = strong.torque(0, 0.02, false).stress_tensor;
+  EXPECT_LT(std::abs(n2 / n1 - 2), 1e-2);
+  EXPECT_GT(std::abs(s2 / s1 - 2), std::abs(n2 / n1 - 2));
+}
+
+TEST(TorqueMotorField, MeshingFailureNamesTheTemplate)
+{
+  try
+    {
+      mesh_template({"broken.geo", "SetFactory(\"OpenCASCADE\");\nError(\"impossible part\");\n", 1e-3}, {}, {}, {}, false);
+      FAIL();
+    }
+  catch (const std::runtime_error &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("broken.geo"), std::string::npos) << e.what();
+    }
+}
+
+TEST(TorqueMotorField, MorphingRefusesATiltLargerThanTheGap)
+{
+  const auto v = coarse_rv1();
+  TorqueMotorFieldModel model(v, 40);
+  // the armature tip (16.8 mm from the pivot) meets the 0.3 mm gap's pole at about 1.02 deg
+  EXPECT_THROW(model.problem().set_position(1.1 * units::degree), std::runtime_error);
+}
