@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Benchmark: wall time of the README's main job, `servodrift run' on the built-in valve RV-1
 # (issue 2: under 10 s on this 2-core machine), with plots and report, serial and on 2 MPI ranks.
-#   bench/run_servodrift.sh [build-dir] [repetitions]
+#   bench/run_servodrift.sh [build-dir] [repetitions] [servodrift options...]
 set -eu
 build=${1:-build} n=${2:-5}
+shift 2 || true
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 measure() {
@@ -15,6 +16,6 @@ measure() {
   done
   printf '%s\n' "${times[@]}" | sort -g | awk '{a[NR]=$1/1000} END {printf "min %.3f s, median %.3f s (%d runs)\n", a[1], a[int((NR+1)/2)], NR}'
 }
-echo -n "servodrift run (1 rank):            "; measure "$build/servodrift" run -o "$out/a"
+echo -n "servodrift run (1 rank):            "; measure "$build/servodrift" run -o "$out/a" "$@"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-echo -n "mpirun -np 2 servodrift run:        "; measure mpirun -np 2 "$build/servodrift" run -o "$out/b"
+echo -n "mpirun -np 2 servodrift run:        "; measure mpirun -np 2 "$build/servodrift" run -o "$out/b" "$@"

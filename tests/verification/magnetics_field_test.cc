@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 
 using namespace servodrift;
 using namespace servodrift::magnetics;
@@ -74,10 +75,12 @@ TEST(MagnetostaticsVerification, CCoreGapFieldAndPoleForce)
       EXPECT_LT(relative(B_gap, B_ideal), 0.02) << B_gap << " T vs " << B_ideal << " T";
     }
   EXPECT_LT(problem.mean_flux_density(3, 1) * problem.mean_flux_density(7, 1), 0);
+  std::cout << "C-core: B_gap " << std::abs(problem.mean_flux_density(3, 1)) << " T (closed form " << B_ideal << ")\n";
   const double F_ideal = 2 * B_ideal * B_ideal * A / (2 * mu0);
   const double F = problem.stress_tensor_force(); // attraction: towards the core, -y
   EXPECT_LT(F, 0);
   EXPECT_LT(relative(-F, F_ideal), 0.02) << -F << " N vs " << F_ideal << " N";
+  std::cout << "C-core: force " << -F << " N (closed form " << 2 * B_ideal * B_ideal * A / (2 * mu0) << ")\n";
   // virtual work: the same force from the coenergy (1 %)
   EXPECT_LT(relative(problem.virtual_work_force(1e-6), F), 0.01);
 }
@@ -97,6 +100,7 @@ TEST(MagnetostaticsVerification, UniformlyMagnetisedCylinder)
   problem.solve(0.0);
   EXPECT_LT(relative(problem.mean_flux_density(1, 0), 0.5), 0.01) << problem.mean_flux_density(1, 0);
   EXPECT_LT(std::abs(problem.mean_flux_density(1, 1)), 1e-3);
+  std::cout << "cylinder: B inside " << problem.mean_flux_density(1, 0) << " T (closed form 0.5)\n";
 }
 
 TEST(TorqueMotorField, LinearArmatureDoublingCurrentDoublesTorque)

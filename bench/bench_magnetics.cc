@@ -1,0 +1,59 @@
+// Benchmark of the field-level torque motor (issue 3): one (T, theta, i) case at the default
+// resolution from scratch (meshing, set-up, cold Newton, both torque methods) and warm (as inside a
+// sweep), with unknowns, Newton iterations and time per case. Not a test.
+//   OMP_THREAD_LIMIT=1 build/bench/bench_magnetics [repetitions]
+// The default sweep (9 x 9 x 5 cases) is timed with the command itself:
+//   time mpirun -np 2 build/servodrift magnetics -o /tmp/bench
+#include "common/units.h"
+#include "common/valve_description.h"
+#include "magnetics/torque_motor_field.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+
+using namespace servodrift;
+
+int main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const int repetitions = argc > 1 ? std::atoi(argv[1]) : 3;
+  const ValveDescription valve = load_valve_description("", {"Output/Progress=none"});
+  using clock = std::chrono::steady_clock;
+  auto seconds = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
+
+  std::vector<double> setup, cold, warm;
+  unsigned int dofs = 0, cold_iterations = 0, warm_iterations = 0;
+  for (int k = 0; k < repetitions; ++k)
+    {
+      const auto t0 = clock::now();
+      magnetics::TorqueMotorFieldModel model(valve, 40); // gmsh meshing, DoFs, symbolic factorisations
+      const auto t1 = clock::now();
+      const auto a = model.torque(0.1 * units::degree, 0.0, true); // from A = 0, with virtual work
+      const auto t2 = clock::now();
+      const auto b = model.torque(0.15 * units::degree, 0.01, true); // a neighbouring case, warm
+      const auto t3 = clock::now();
+      setup.push_back(seconds(t0, t1));
+      cold.push_back(seconds(t1, t2));
+      warm.push_back(seconds(t2, t3));
+      dofs = model.n_dofs();
+      cold_iterations = a.newton.iterations;
+      warm_iterations = b.newton.iterations;
+    }
+  auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
+  std::printf("torque motor field model at 40 degC, default resolution: %u unknowns (FE_Q(%u))\n", dofs,
+              valve.torque_motor.field_element_degree);
+  std::printf("  meshing and set-up:                         %.3f s (median of %d)\n", median(setup), repetitions);
+  std::printf("  first case (0.1 deg, 0 A) from A = 0:        %.3f s, %u Newton iterations at the case\n", median(cold),
+              cold_iterations);
+  std::printf("  next case (0.15 deg, 10 mA), warm start:     %.3f s, %u Newton/chord iterations at the case\n",
+              median(warm), warm_iterations);
+  std::printf("  (each case: the solve, the stress tensor, and two more solves for the virtual work)\n");
+  return 0;
+}
