@@ -163,6 +163,17 @@ namespace servodrift
             e25.note = "secant K_m = T(0.1 deg, i = 0)/(0.1 deg) at each table temperature (C1); paper: "
                        "K_m0 = 11.61, K_mT = -0.004837";
             fits.push_back(e25);
+            std::vector<double> Kt;
+            for (double temperature : torque.axis(0))
+              Kt.push_back(torque_motor_coefficients(torque, temperature).torque_constant);
+            PolynomialFit kt = fit_polynomial(T, Kt, {{0}, {1}});
+            kt.name = "torque constant K_t(T) = K_t0 + K_tT T";
+            kt.source = "torque_motor.csv";
+            kt.response = "K_t[N*m/A]";
+            kt.variables = {"temperature[degC]"};
+            kt.note = "K_t = dT/di at theta = 0, i = 0 (Richardson-extrapolated central differences) at each table "
+                      "temperature";
+            fits.push_back(kt);
           }
         fits.push_back(general_fit(t, "torque", {"temperature", "angle", "current"}, valve.fits.torque_motor_degrees, all));
       }
