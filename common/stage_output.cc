@@ -144,36 +144,38 @@ namespace servodrift
     const auto all = [](const std::vector<double> &) { return true; };
     if (t.name() == "torque_motor")
       {
-        // E25: T_e = (K_m0 + K_mT T) theta, fitted to the secant K_m at 0.1 deg (C1) of each temperature
+        // E25: T_e = (K_m0 + K_mT T) theta, fitted to the secant K_m at 0.1 deg (C1) of each
+        // temperature; and K_t(T) the same way
         const GridFunction torque = GridFunction::from_table(t, "torque_motor", "torque");
         std::vector<std::vector<double>> T;
-        std::vector<double> K;
+        std::vector<TorqueMotorCoefficients> c;
         for (double temperature : torque.axis(0))
           {
             T.push_back({temperature});
-            K.push_back(torque_motor_coefficients(torque, temperature).secant_magnetic_spring);
+            c.push_back(torque_motor_coefficients(torque, temperature));
           }
+        auto linear_in_T = [&](const char *name, const char *response, double TorqueMotorCoefficients::*member,
+                               const char *note) {
+          std::vector<double> values;
+          for (const auto &k : c)
+            values.push_back(k.*member);
+          PolynomialFit f = fit_polynomial(T, values, {{0}, {1}});
+          f.name = name;
+          f.source = "torque_motor.csv";
+          f.response = response;
+          f.variables = {"temperature[degC]"};
+          f.note = note;
+          fits.push_back(f);
+        };
         if (T.size() >= 2)
           {
-            PolynomialFit e25 = fit_polynomial(T, K, {{0}, {1}});
-            e25.name = "E25 magnetic spring K_m(T) = K_m0 + K_mT T";
-            e25.source = "torque_motor.csv";
-            e25.response = "K_m[N*m/rad]";
-            e25.variables = {"temperature[degC]"};
-            e25.note = "secant K_m = T(0.1 deg, i = 0)/(0.1 deg) at each table temperature (C1); paper: "
-                       "K_m0 = 11.61, K_mT = -0.004837";
-            fits.push_back(e25);
-            std::vector<double> Kt;
-            for (double temperature : torque.axis(0))
-              Kt.push_back(torque_motor_coefficients(torque, temperature).torque_constant);
-            PolynomialFit kt = fit_polynomial(T, Kt, {{0}, {1}});
-            kt.name = "torque constant K_t(T) = K_t0 + K_tT T";
-            kt.source = "torque_motor.csv";
-            kt.response = "K_t[N*m/A]";
-            kt.variables = {"temperature[degC]"};
-            kt.note = "K_t = dT/di at theta = 0, i = 0 (Richardson-extrapolated central differences) at each table "
-                      "temperature";
-            fits.push_back(kt);
+            linear_in_T("E25 magnetic spring K_m(T) = K_m0 + K_mT T", "K_m[N*m/rad]",
+                        &TorqueMotorCoefficients::secant_magnetic_spring,
+                        "secant K_m = T(0.1 deg, i = 0)/(0.1 deg) at each table temperature (C1); paper: K_m0 = 11.61, "
+                        "K_mT = -0.004837");
+            linear_in_T("torque constant K_t(T) = K_t0 + K_tT T", "K_t[N*m/A]", &TorqueMotorCoefficients::torque_constant,
+                        "K_t = dT/di at theta = 0, i = 0 (Richardson-extrapolated central differences) at each table "
+                        "temperature");
           }
         fits.push_back(general_fit(t, "torque", {"temperature", "angle", "current"}, valve.fits.torque_motor_degrees, all));
       }
