@@ -13,7 +13,7 @@
 //    virtual velocity of the body extended smoothly into the air (4.1 item 2);
 //  - virtual work at constant current, dW'/ds by central differences of the coenergy W' (item 3).
 #include "magnetics/bh_curve.h"
-#include "magnetics/gmsh_mesh.h"
+#include "common/gmsh_mesh.h"
 
 #include <array>
 #include <map>

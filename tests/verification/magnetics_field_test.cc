@@ -4,7 +4,7 @@
 #include "common/fitting.h"
 #include "common/output_files.h"
 #include "common/units.h"
-#include "magnetics/gmsh_mesh.h"
+#include "common/gmsh_mesh.h"
 #include "magnetics/magnetostatic_problem.h"
 #include "magnetics/reduced_order_circuit.h"
 #include "magnetics/torque_motor_field.h"

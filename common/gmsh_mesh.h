@@ -1,18 +1,20 @@
 #pragma once
-// Planar quadrilateral meshes from parametric gmsh templates, through the gmsh SDK. The result is a
-// plain description (no deal.II types), turned into a deal.II triangulation by the solver.
+// Planar meshes from gmsh, through the gmsh SDK: parametric templates (.geo text with ONELAB
+// parameters, meshed at run time) and mesh or geometry files (.msh, .geo). The result is a plain
+// description, no solver types: the FEM (deal.II) and FV (flow/) codes build their own meshes from it.
 #include <array>
 #include <map>
 #include <string>
 #include <vector>
 
-namespace servodrift::magnetics
+namespace servodrift
 {
   struct PlanarMesh
   {
     struct Cell
     {
-      std::array<unsigned int, 4> vertices; ///< counterclockwise
+      std::array<unsigned int, 4> vertices; ///< counterclockwise; a triangle uses the first three
+      unsigned int n_vertices;              ///< 3 or 4
       int material;
     };
     struct Face
@@ -23,6 +25,8 @@ namespace servodrift::magnetics
     std::vector<std::array<double, 2>> vertices; ///< [m]
     std::vector<Cell> cells;
     std::vector<Face> boundary_faces;
+    std::map<int, std::string> material_names; ///< id -> physical surface name
+    std::map<int, std::string> boundary_names; ///< id -> physical curve name
   };
 
   struct GmshTemplate
@@ -41,4 +45,13 @@ namespace servodrift::magnetics
   PlanarMesh mesh_template(const GmshTemplate &geo, const std::map<std::string, double> &parameters,
                            const std::map<std::string, int> &materials, const std::map<std::string, int> &boundaries,
                            bool mirror_x, const std::map<int, int> &mirrored_materials = {});
-} // namespace servodrift::magnetics
+
+  /// A 2D mesh of triangles and quadrilaterals: a template meshed with `parameters' (as above), where
+  /// every physical surface becomes a material and every physical curve a boundary, numbered from 0
+  /// in the order of their names, which are recorded.
+  PlanarMesh mesh_template_all_groups(const GmshTemplate &geo, const std::map<std::string, double> &parameters);
+
+  /// The same from a file: a .msh mesh (read as is) or a .geo geometry (meshed in 2D). Throws
+  /// InputError naming the file if it does not exist or is not a gmsh file, or holds no 2D cells.
+  PlanarMesh read_gmsh_file(const std::string &path, double unit = 1);
+} // namespace servodrift
