@@ -39,6 +39,7 @@ namespace servodrift
       PilotStageParameters::declare_parameters(prm);
       SpoolParameters::declare_parameters(prm);
       FluidParameters::declare_parameters(prm);
+      FlowSolverParameters::declare_parameters(prm);
       OffsetParameters::declare_parameters(prm);
       SweepParameters::declare_parameters(prm);
       FitParameters::declare_parameters(prm);
@@ -55,6 +56,7 @@ namespace servodrift
       v.pilot.parse_parameters(prm);
       v.spool.parse_parameters(prm);
       v.fluid.parse_parameters(prm);
+      v.flow_solver.parse_parameters(prm);
       v.offsets.parse_parameters(prm);
       v.sweeps.parse_parameters(prm);
       v.fits.parse_parameters(prm);

@@ -4,6 +4,7 @@
 // section 0). Defaults are the built-in valve RV-1, so no input file is needed.
 #include "common/parameters/armature.h"
 #include "common/parameters/fits.h"
+#include "common/parameters/flow_solver.h"
 #include "common/parameters/fluid.h"
 #include "common/parameters/offsets.h"
 #include "common/parameters/operating_conditions.h"
@@ -30,6 +31,7 @@ namespace servodrift
     PilotStageParameters pilot;
     SpoolParameters spool;
     FluidParameters fluid;
+    FlowSolverParameters flow_solver;
     OffsetParameters offsets;
     SweepParameters sweeps;
     FitParameters fits;

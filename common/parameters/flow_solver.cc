@@ -1,0 +1,49 @@
+#include "common/parameters/flow_solver.h"
+
+#include "common/parameters/parameter_helpers.h"
+
+namespace servodrift
+{
+  using namespace parameters;
+
+  void FlowSolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection);
+    prm.declare_entry("Convection scheme", "bounded-linear-upwind",
+                      Patterns::Selection("upwind|bounded-linear-upwind"),
+                      "Face values of the convected velocity: upwind (first order, as in [K22]) or "
+                      "bounded-linear-upwind (second order, the upwind cell's gradient limited by "
+                      "Barth-Jespersen, as a deferred correction). [-]");
+    prm.declare_entry("Velocity relaxation", "0.8", Patterns::Double(0.01, 1),
+                      "Under-relaxation alpha_u of the momentum equations (SIMPLEC). [1]");
+    prm.declare_entry("Pressure relaxation", "1", Patterns::Double(0.01, 1),
+                      "Under-relaxation of the pressure correction; SIMPLEC needs none (1). [1]");
+    prm.declare_entry("Momentum solver", "bicgstab-jacobi", Patterns::Selection("bicgstab-jacobi|bicgstab-ilu|direct"),
+                      "Linear solver of the momentum equations: BiCGSTAB with a Jacobi or an incomplete-LU "
+                      "preconditioner (Eigen), or UMFPACK LU with its symbolic analysis once per mesh "
+                      "(SuiteSparse); bench/bench_flow measures them. [-]");
+    prm.declare_entry("Tolerance", "1e-8", Patterns::Double(1e-15, 1),
+                      "The run converges when the scaled residuals of both momentum equations and of "
+                      "continuity fall below this. [1]");
+    prm.declare_entry("Maximum iterations", "5000", Patterns::Integer(1, 10000000),
+                      "SIMPLEC iterations; a run that has not converged by then fails. [1]");
+    prm.declare_entry("Report interval", "0", Patterns::Integer(0, 10000000),
+                      "Print the residuals every this many iterations on stderr (0: only at the end). [1]");
+    prm.leave_subsection();
+  }
+
+  void FlowSolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection);
+    convection = prm.get("Convection scheme") == "upwind" ? Convection::upwind : Convection::bounded_linear_upwind;
+    velocity_relaxation = prm.get_double("Velocity relaxation");
+    pressure_relaxation = prm.get_double("Pressure relaxation");
+    const std::string m = prm.get("Momentum solver");
+    momentum_solver = m == "direct" ? MomentumSolver::direct :
+                      m == "bicgstab-ilu" ? MomentumSolver::bicgstab_ilu : MomentumSolver::bicgstab_jacobi;
+    tolerance = prm.get_double("Tolerance");
+    max_iterations = prm.get_integer("Maximum iterations");
+    report_interval = prm.get_integer("Report interval");
+    prm.leave_subsection();
+  }
+} // namespace servodrift

@@ -1,0 +1,24 @@
+#pragma once
+#include <string>
+namespace dealii { class ParameterHandler; }
+
+namespace servodrift
+{
+  /// Subsection "Flow solver": numerics of the finite-volume solver (flow/, issue 4).
+  struct FlowSolverParameters
+  {
+    static constexpr const char *subsection = "Flow solver";
+    enum class Convection { upwind, bounded_linear_upwind };
+    Convection convection;          ///< face values of the convected velocity
+    double velocity_relaxation;     ///< alpha_u of the momentum equations [1]
+    double pressure_relaxation;     ///< alpha_p of the pressure correction (1 for SIMPLEC) [1]
+    enum class MomentumSolver { bicgstab_jacobi, bicgstab_ilu, direct };
+    MomentumSolver momentum_solver; ///< linear solver of the momentum equations
+    double tolerance;               ///< scaled residuals of momentum and continuity [1]
+    unsigned int max_iterations;    ///< SIMPLEC iterations before the run fails
+    unsigned int report_interval;   ///< print the residuals every n iterations (0: never)
+
+    static void declare_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace servodrift

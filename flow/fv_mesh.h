@@ -1,0 +1,71 @@
+#pragma once
+// The finite-volume mesh of the flow solver: cells (triangles and quadrilaterals from gmsh), faces
+// with owner/neighbour addressing, and the geometry of a planar or an axisymmetric (x axial, r = y
+// radial) domain. Axisymmetric volumes and face areas are per radian: V = int r dA, S = int r ds.
+#include "common/gmsh_mesh.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace servodrift::flow
+{
+  using Vector2 = Eigen::Vector2d;
+
+  enum class Geometry
+  {
+    planar,       ///< unit depth
+    axisymmetric, ///< x axial, y = r radial; per radian
+  };
+
+  class FvMesh
+  {
+  public:
+    /// From a gmsh mesh whose physical curves name the boundaries. Every boundary edge must belong
+    /// to a named curve; throws InputError naming `source' otherwise.
+    FvMesh(const PlanarMesh &mesh, Geometry geometry, std::string source);
+
+    Geometry geometry;
+    std::string source; ///< file or template, for messages
+
+    std::vector<Vector2> points;
+
+    // cells
+    std::size_t n_cells() const { return cell_center.size(); }
+    std::vector<std::array<unsigned int, 4>> cell_points;
+    std::vector<unsigned int> cell_n_points;
+    std::vector<Vector2> cell_center; ///< centroid of the 2D cell
+    std::vector<double> cell_volume;  ///< area (planar) or int r dA (axisymmetric) [m^2 or m^3/rad]
+    std::vector<std::vector<unsigned int>> cell_faces;
+
+    // faces
+    std::size_t n_faces() const { return owner.size(); }
+    std::vector<unsigned int> owner;
+    std::vector<int> neighbour; ///< -1 on the boundary
+    std::vector<std::array<unsigned int, 2>> face_points;
+    std::vector<Vector2> face_center;
+    std::vector<Vector2> face_normal; ///< unit, pointing out of the owner
+    std::vector<double> face_area;    ///< length (planar) or int r ds (axisymmetric)
+    std::vector<int> face_patch;      ///< boundary patch, -1 inside
+    double face_weight(std::size_t f) const { return weight[f]; } ///< owner's share of linear interpolation
+
+    // boundary patches (gmsh physical curves)
+    std::vector<std::string> patch_names;
+    std::vector<std::vector<unsigned int>> patch_faces;
+    int patch_index(const std::string &name) const; ///< -1 if absent
+
+    /// Least-squares gradient of a cell field; `boundary_value[f]' gives the value at boundary face f.
+    std::vector<Vector2> gradient(const std::vector<double> &cell_value, const std::vector<double> &boundary_value) const;
+    void gradient(const std::vector<double> &cell_value, const std::vector<double> &boundary_value,
+                  std::vector<Vector2> &result) const;
+
+  private:
+    std::vector<double> weight;
+    /// Weighted least squares (weights 1/|d|^2): grad phi_c = sum over the cell's faces of
+    /// coefficient * (phi_other - phi_c), coefficient = (sum w d d^T)^-1 w d, stored per cell face.
+    std::vector<Vector2> gradient_coefficient; ///< aligned with the flattened cell_faces
+    std::vector<std::size_t> cell_face_offset;
+  };
+} // namespace servodrift::flow

@@ -1,0 +1,766 @@
+#include "flow/simplec.h"
+
+#include "common/error.h"
+#include "common/units.h"
+#include "flow/vtu_writer.h"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/Sparse>
+#include <Eigen/UmfPackSupport>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <set>
+#include <stdexcept>
+
+namespace servodrift::flow
+{
+  using Kind = BoundaryCondition::Kind;
+
+  BoundaryCondition BoundaryCondition::wall(Vector2 moving)
+  {
+    BoundaryCondition b;
+    b.kind = Kind::wall;
+    b.velocity = [moving](const Vector2 &) { return moving; };
+    return b;
+  }
+
+  BoundaryCondition BoundaryCondition::velocity_inlet(std::function<Vector2(const Vector2 &)> profile)
+  {
+    BoundaryCondition b;
+    b.kind = Kind::velocity_inlet;
+    b.velocity = std::move(profile);
+    return b;
+  }
+
+  BoundaryCondition BoundaryCondition::total_pressure_inlet(double p0)
+  {
+    BoundaryCondition b;
+    b.kind = Kind::total_pressure_inlet;
+    b.pressure = p0;
+    return b;
+  }
+
+  BoundaryCondition BoundaryCondition::pressure_outlet(double p)
+  {
+    BoundaryCondition b;
+    b.kind = Kind::pressure_outlet;
+    b.pressure = p;
+    return b;
+  }
+
+  BoundaryCondition BoundaryCondition::axis()
+  {
+    BoundaryCondition b;
+    b.kind = Kind::axis;
+    return b;
+  }
+
+  BoundaryCondition BoundaryCondition::symmetry()
+  {
+    BoundaryCondition b;
+    b.kind = Kind::symmetry;
+    return b;
+  }
+
+  namespace
+  {
+    using SparseMatrix = Eigen::SparseMatrix<double>;
+    using Cholesky = Eigen::CholmodSimplicialLDLT<SparseMatrix, Eigen::Lower>;
+
+    /// Preconditions conjugate gradients with a Cholesky factorisation of a recent pressure matrix:
+    /// the matrix changes slowly from one SIMPLEC iteration to the next, so an older factor solves
+    /// the new system in a few iterations, and it is renewed only when they are no longer few.
+    class FactorPreconditioner
+    {
+    public:
+      using StorageIndex = int;
+      enum
+      {
+        ColsAtCompileTime = Eigen::Dynamic,
+        MaxColsAtCompileTime = Eigen::Dynamic
+      };
+      FactorPreconditioner() = default;
+      template <typename M>
+      FactorPreconditioner &analyzePattern(const M &) { return *this; }
+      template <typename M>
+      FactorPreconditioner &factorize(const M &) { return *this; }
+      template <typename M>
+      FactorPreconditioner &compute(const M &) { return *this; }
+      template <typename Rhs>
+      Rhs solve(const Rhs &b) const { return factor->solve(b); }
+      Eigen::ComputationInfo info() const { return Eigen::Success; }
+      const Cholesky *factor = nullptr;
+    };
+
+    bool is_pressure_boundary(Kind k)
+    {
+      return k == Kind::pressure_outlet || k == Kind::total_pressure_inlet;
+    }
+  } // namespace
+
+  struct SimplecSolver::Implementation
+  {
+    const FvMesh &mesh;
+    FluidProperties fluid;
+    FlowSolverParameters settings;
+    std::vector<BoundaryCondition> patch_condition; ///< per patch
+    std::vector<Kind> face_kind;                    ///< per face (interior: unused)
+    std::vector<Vector2> prescribed_velocity;       ///< walls and velocity inlets, per face
+
+    std::vector<double> u, v, p, flux;
+    std::vector<double> u_b, v_b, p_b; ///< boundary face values (interior entries unused)
+    std::vector<Vector2> grad_p;
+    std::vector<double> a_u;          ///< relaxed diagonal of the u equation
+    std::vector<double> D, D_simplec; ///< V/a_P and V/(a_P - sum a_nb)
+    bool has_pressure_boundary = false;
+    double reference_flux = 0;
+
+    // sparse pattern: diagonal and one entry per side of each interior face
+    SparseMatrix matrix_u, matrix_v, matrix_p;
+    std::vector<std::ptrdiff_t> diagonal_index;     ///< per cell
+    std::vector<std::ptrdiff_t> owner_row_index;    ///< per interior face: (owner, neighbour)
+    std::vector<std::ptrdiff_t> neighbour_row_index; ///< per interior face: (neighbour, owner)
+    Cholesky pressure_factor;
+    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, FactorPreconditioner> pressure_cg;
+    bool have_pressure_factor = false;
+    unsigned int last_cg_iterations = 0;
+    Eigen::UmfPackLU<SparseMatrix> direct_u, direct_v;
+    Eigen::BiCGSTAB<SparseMatrix, Eigen::IncompleteLUT<double>> iterative_ilu;
+    Eigen::BiCGSTAB<SparseMatrix, Eigen::DiagonalPreconditioner<double>> iterative_jacobi;
+    Residuals last;
+    std::vector<double> diag, off_sum, psi; // work arrays of the momentum assembly
+    std::vector<Vector2> grad;
+
+    Implementation(const FvMesh &mesh, const FluidProperties &fluid,
+                   const std::map<std::string, BoundaryCondition> &boundaries, const FlowSolverParameters &settings);
+
+    void setup_pattern();
+    void update_boundary_values();
+    double distance_to_face(std::size_t f) const
+    {
+      return (mesh.face_center[f] - mesh.cell_center[mesh.owner[f]]).dot(mesh.face_normal[f]);
+    }
+    std::vector<double> limiter(const std::vector<double> &phi, const std::vector<double> &phi_b,
+                                const std::vector<Vector2> &grad) const;
+    double assemble_momentum(SparseMatrix &A, Eigen::VectorXd &b, const std::vector<double> &phi,
+                             const std::vector<double> &phi_b, const std::vector<double> &other, int component,
+                             double &scale);
+    void solve_momentum(SparseMatrix &A, Eigen::VectorXd &b, std::vector<double> &phi,
+                        Eigen::UmfPackLU<SparseMatrix> &direct, bool first);
+    std::vector<double> rhie_chow_fluxes() const;
+    double pressure_correction(std::vector<double> &flux_star);
+    Residuals iterate(bool first);
+  };
+
+  SimplecSolver::Implementation::Implementation(const FvMesh &mesh_, const FluidProperties &fluid_,
+                                                const std::map<std::string, BoundaryCondition> &boundaries,
+                                                const FlowSolverParameters &settings_)
+    : mesh(mesh_)
+    , fluid(fluid_)
+    , settings(settings_)
+  {
+    if (!(fluid.density > 0))
+      throw InputError("flow: density " + format_number(fluid.density) + " kg/m^3 must be > 0");
+    if (!(fluid.viscosity > 0))
+      throw InputError("flow: viscosity " + format_number(fluid.viscosity) + " Pa*s must be > 0");
+    for (const auto &[name, bc] : boundaries)
+      if (mesh.patch_index(name) < 0)
+        {
+          std::string known;
+          for (const auto &n : mesh.patch_names)
+            known += (known.empty() ? "" : ", ") + n;
+          throw InputError(mesh.source + ": no boundary `" + name + "' (its boundaries: " + known + ")");
+        }
+    bool inlet = false, outlet = false, moving_wall = false;
+    for (std::size_t k = 0; k < mesh.patch_names.size(); ++k)
+      {
+        const auto found = boundaries.find(mesh.patch_names[k]);
+        if (found == boundaries.end())
+          throw InputError(mesh.source + ": boundary `" + mesh.patch_names[k] + "' has no boundary condition");
+        const BoundaryCondition &bc = found->second;
+        if (bc.kind == Kind::axis && mesh.geometry != Geometry::axisymmetric)
+          throw InputError(mesh.source + ": boundary `" + mesh.patch_names[k] + "' is an axis in a planar domain");
+        patch_condition.push_back(bc);
+        inlet = inlet || bc.kind == Kind::velocity_inlet || bc.kind == Kind::total_pressure_inlet;
+        outlet = outlet || bc.kind == Kind::pressure_outlet;
+        if (bc.kind == Kind::wall)
+          for (unsigned int f : mesh.patch_faces[k])
+            moving_wall = moving_wall || bc.velocity(mesh.face_center[f]).norm() > 0;
+        has_pressure_boundary = has_pressure_boundary || is_pressure_boundary(bc.kind);
+      }
+    if (!inlet && !moving_wall)
+      throw InputError(mesh.source + ": no inlet (and no moving wall) drives the flow");
+    if (inlet && !outlet && !has_pressure_boundary)
+      throw InputError(mesh.source + ": the flow has an inlet but no outlet");
+
+    const std::size_t n = mesh.n_cells(), nf = mesh.n_faces();
+    u.assign(n, 0), v.assign(n, 0), p.assign(n, 0), flux.assign(nf, 0);
+    u_b.assign(nf, 0), v_b.assign(nf, 0), p_b.assign(nf, 0);
+    grad_p.assign(n, Vector2::Zero());
+    a_u.assign(n, 1), D.assign(n, 0), D_simplec.assign(n, 0);
+    face_kind.assign(nf, Kind::wall);
+    prescribed_velocity.assign(nf, Vector2::Zero());
+    for (std::size_t f = 0; f < nf; ++f)
+      if (mesh.neighbour[f] < 0)
+        {
+          const BoundaryCondition &bc = patch_condition[mesh.face_patch[f]];
+          face_kind[f] = bc.kind;
+          if (bc.kind == Kind::wall || bc.kind == Kind::velocity_inlet)
+            prescribed_velocity[f] = bc.velocity(mesh.face_center[f]);
+          if (bc.kind == Kind::velocity_inlet)
+            flux[f] = fluid.density * prescribed_velocity[f].dot(mesh.face_normal[f]) * mesh.face_area[f];
+        }
+    // throughput: inflow through velocity inlets, else (pressure-driven) updated as it develops
+    for (std::size_t f = 0; f < nf; ++f)
+      if (mesh.neighbour[f] < 0 && face_kind[f] == Kind::velocity_inlet)
+        reference_flux += std::max(0.0, -flux[f]);
+    setup_pattern();
+    update_boundary_values();
+  }
+
+  void SimplecSolver::Implementation::setup_pattern()
+  {
+    const std::size_t n = mesh.n_cells();
+    std::vector<Eigen::Triplet<double>> t;
+    for (std::size_t c = 0; c < n; ++c)
+      t.emplace_back(c, c, 1.0);
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      if (mesh.neighbour[f] >= 0)
+        {
+          t.emplace_back(mesh.owner[f], mesh.neighbour[f], 0.0);
+          t.emplace_back(mesh.neighbour[f], mesh.owner[f], 0.0);
+        }
+    SparseMatrix A(n, n);
+    A.setFromTriplets(t.begin(), t.end());
+    A.makeCompressed();
+    auto position = [&A](std::size_t r, std::size_t c) {
+      const int *inner = A.innerIndexPtr(), *outer = A.outerIndexPtr();
+      return std::lower_bound(inner + outer[c], inner + outer[c + 1], static_cast<int>(r)) - inner;
+    };
+    diagonal_index.resize(n);
+    for (std::size_t c = 0; c < n; ++c)
+      diagonal_index[c] = position(c, c);
+    owner_row_index.assign(mesh.n_faces(), -1);
+    neighbour_row_index.assign(mesh.n_faces(), -1);
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      if (mesh.neighbour[f] >= 0)
+        {
+          owner_row_index[f] = position(mesh.owner[f], mesh.neighbour[f]);
+          neighbour_row_index[f] = position(mesh.neighbour[f], mesh.owner[f]);
+        }
+    matrix_u = A, matrix_v = A, matrix_p = A;
+    pressure_factor.analyzePattern(matrix_p); // once per mesh
+    if (pressure_factor.info() != Eigen::Success)
+      throw std::runtime_error("flow: CHOLMOD symbolic analysis of the pressure equation failed");
+    pressure_cg.preconditioner().factor = &pressure_factor;
+  }
+
+  void SimplecSolver::Implementation::update_boundary_values()
+  {
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      {
+        if (mesh.neighbour[f] >= 0)
+          continue;
+        const unsigned int P = mesh.owner[f];
+        const Vector2 &n = mesh.face_normal[f];
+        const Vector2 uP(u[P], v[P]);
+        Vector2 ub;
+        switch (face_kind[f])
+          {
+            case Kind::wall:
+            case Kind::velocity_inlet: ub = prescribed_velocity[f]; break;
+            case Kind::symmetry: ub = uP - uP.dot(n) * n; break;
+            case Kind::axis: ub = Vector2(u[P], 0.0); break;
+            default: ub = uP; // pressure boundaries: zero gradient
+          }
+        u_b[f] = ub.x(), v_b[f] = ub.y();
+        const BoundaryCondition &bc = patch_condition[mesh.face_patch[f]];
+        if (face_kind[f] == Kind::pressure_outlet)
+          p_b[f] = bc.pressure;
+        else if (face_kind[f] == Kind::total_pressure_inlet)
+          p_b[f] = bc.pressure - 0.5 * fluid.density * uP.squaredNorm(); // p = p_0 - rho |u|^2/2
+        else // extrapolated with the last gradient (second order at walls: the wall pressure force)
+          p_b[f] = p[P] + grad_p[P].dot(mesh.face_center[f] - mesh.cell_center[P]);
+      }
+  }
+
+  std::vector<double> SimplecSolver::Implementation::limiter(const std::vector<double> &phi,
+                                                             const std::vector<double> &phi_b,
+                                                             const std::vector<Vector2> &grad) const
+  {
+    // Barth-Jespersen: the reconstructed face values stay within the neighbours' range
+    std::vector<double> psi(mesh.n_cells(), 1.0);
+    for (std::size_t c = 0; c < mesh.n_cells(); ++c)
+      {
+        double lo = phi[c], hi = phi[c];
+        for (unsigned int f : mesh.cell_faces[c])
+          {
+            const double o = mesh.neighbour[f] < 0 ? phi_b[f] : phi[mesh.owner[f] == c ? mesh.neighbour[f] : mesh.owner[f]];
+            lo = std::min(lo, o), hi = std::max(hi, o);
+          }
+        for (unsigned int f : mesh.cell_faces[c])
+          {
+            const double delta = grad[c].dot(mesh.face_center[f] - mesh.cell_center[c]);
+            if (delta > 1e-300)
+              psi[c] = std::min(psi[c], std::min(1.0, (hi - phi[c]) / delta));
+            else if (delta < -1e-300)
+              psi[c] = std::min(psi[c], std::min(1.0, (lo - phi[c]) / delta));
+          }
+      }
+    return psi;
+  }
+
+  /// Assembles the momentum equation of one component (0: x, 1: y) in place; returns the sum of
+  /// |residual| of the current field (before relaxation), and in `scale' its normalisation.
+  double SimplecSolver::Implementation::assemble_momentum(SparseMatrix &A, Eigen::VectorXd &b,
+                                                          const std::vector<double> &phi,
+                                                          const std::vector<double> &phi_b,
+                                                          const std::vector<double> &other, int component,
+                                                          double &scale)
+  {
+    const std::size_t n = mesh.n_cells();
+    const double mu = fluid.viscosity;
+    double *value = A.valuePtr();
+    std::fill(value, value + A.nonZeros(), 0.0);
+    b.setZero(n);
+    diag.assign(n, 0.0);
+    off_sum.assign(n, 0.0);
+    mesh.gradient(phi, phi_b, grad);
+    const bool second_order = settings.convection == FlowSolverParameters::Convection::bounded_linear_upwind;
+    if (second_order)
+      psi = limiter(phi, phi_b, grad);
+
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      {
+        const unsigned int P = mesh.owner[f];
+        const Vector2 &nrm = mesh.face_normal[f];
+        const double area = mesh.face_area[f], F = flux[f];
+        if (mesh.neighbour[f] >= 0)
+          {
+            const unsigned int N = mesh.neighbour[f];
+            const Vector2 d = mesh.cell_center[N] - mesh.cell_center[P];
+            // diffusion, over-relaxed split S = E + T with E along d: implicit mu |E|/|d|, explicit T part
+            const double Df = mu * area / nrm.dot(d);
+            const double aPN = Df + std::max(-F, 0.0), aNP = Df + std::max(F, 0.0); // upwind convection
+            value[owner_row_index[f]] = -aPN;
+            value[neighbour_row_index[f]] = -aNP;
+            diag[P] += aPN, diag[N] += aNP;
+            off_sum[P] += aPN, off_sum[N] += aNP;
+            const double w = mesh.face_weight(f);
+            const Vector2 grad_f = w * grad[P] + (1 - w) * grad[N];
+            const Vector2 T = area * nrm - area / nrm.dot(d) * d;
+            const double nonorthogonal = mu * grad_f.dot(T);
+            b[P] += nonorthogonal, b[N] -= nonorthogonal;
+            if (second_order)
+              {
+                // deferred correction: F (phi_face,linear upwind - phi_upwind) moves to the source
+                const unsigned int U = F >= 0 ? P : N;
+                const double correction = F * psi[U] * grad[U].dot(mesh.face_center[f] - mesh.cell_center[U]);
+                b[P] -= correction, b[N] += correction;
+              }
+          }
+        else
+          {
+            const double dn = distance_to_face(f);
+            switch (face_kind[f])
+              {
+                case Kind::wall:
+                case Kind::velocity_inlet:
+                  {
+                    const double a = mu * area / dn + std::max(-F, 0.0);
+                    diag[P] += a;
+                    b[P] += a * phi_b[f];
+                    break;
+                  }
+                case Kind::symmetry:
+                  {
+                    // no shear: only the normal component diffuses towards zero (couples u and v)
+                    const double a = mu * area / dn, nc = nrm[component], no = nrm[1 - component];
+                    diag[P] += a * nc * nc;
+                    b[P] -= a * nc * no * other[P];
+                    break;
+                  }
+                default: break; // axis (no area), pressure boundaries (zero gradient)
+              }
+          }
+      }
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        const double V = mesh.cell_volume[c];
+        b[c] -= grad_p[c][component] * V; // pressure gradient
+        if (component == 1 && mesh.geometry == Geometry::axisymmetric)
+          diag[c] += mu * V / (mesh.cell_center[c].y() * mesh.cell_center[c].y()); // hoop: -mu u_r/r^2
+      }
+    // residual of the current field, then under-relaxation
+    double residual = 0;
+    scale = 0;
+    Eigen::Map<const Eigen::VectorXd> x(phi.data(), n);
+    for (std::size_t c = 0; c < n; ++c)
+      value[diagonal_index[c]] = diag[c];
+    const Eigen::VectorXd r = b - A * x;
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        residual += std::abs(r[c]);
+        scale += diag[c] * std::hypot(u[c], v[c]);
+      }
+    const double alpha = settings.velocity_relaxation;
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        value[diagonal_index[c]] = diag[c] / alpha;
+        b[c] += (1 - alpha) / alpha * diag[c] * phi[c];
+      }
+    if (component == 0)
+      for (std::size_t c = 0; c < n; ++c)
+        {
+          a_u[c] = diag[c] / alpha;
+          D[c] = mesh.cell_volume[c] / a_u[c];
+          // SIMPLEC: V/(a_P - sum a_nb); the boundary and relaxation terms keep it positive
+          const double denominator = a_u[c] - off_sum[c];
+          D_simplec[c] = denominator > 1e-12 * a_u[c] ? mesh.cell_volume[c] / denominator : D[c];
+        }
+    return residual;
+  }
+
+  void SimplecSolver::Implementation::solve_momentum(SparseMatrix &A, Eigen::VectorXd &b, std::vector<double> &phi,
+                                                     Eigen::UmfPackLU<SparseMatrix> &direct, bool first)
+  {
+    const std::size_t n = mesh.n_cells();
+    Eigen::Map<Eigen::VectorXd> x(phi.data(), n);
+    if (settings.momentum_solver == FlowSolverParameters::MomentumSolver::direct)
+      {
+        if (first)
+          direct.analyzePattern(A); // symbolic analysis once per mesh
+        direct.factorize(A);
+        if (direct.info() != Eigen::Success)
+          throw std::runtime_error("flow: UMFPACK could not factorise the momentum matrix");
+        x = direct.solve(b);
+        if (direct.info() != Eigen::Success)
+          throw std::runtime_error("flow: UMFPACK momentum solve failed");
+        return;
+      }
+    // BiCGSTAB on the correction, so that its tolerance is relative to the current residual
+    const Eigen::VectorXd r = b - A * x;
+    if (r.norm() == 0)
+      return;
+    auto run = [&](auto &solver) {
+      solver.setTolerance(1e-3);
+      solver.setMaxIterations(1000);
+      solver.compute(A);
+      const Eigen::VectorXd dx = solver.solve(r);
+      if (solver.info() != Eigen::Success)
+        throw std::runtime_error("flow: BiCGSTAB did not converge on the momentum equation (" +
+                                 std::to_string(solver.iterations()) + " iterations, relative residual " +
+                                 format_number(solver.error()) + ")");
+      x += dx;
+    };
+    if (settings.momentum_solver == FlowSolverParameters::MomentumSolver::bicgstab_ilu)
+      {
+        iterative_ilu.preconditioner().setDroptol(1e-4);
+        iterative_ilu.preconditioner().setFillfactor(10);
+        run(iterative_ilu);
+      }
+    else
+      run(iterative_jacobi);
+  }
+
+  std::vector<double> SimplecSolver::Implementation::rhie_chow_fluxes() const
+  {
+    const double rho = fluid.density;
+    std::vector<double> F(mesh.n_faces(), 0.0);
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      {
+        const unsigned int P = mesh.owner[f];
+        const Vector2 &nrm = mesh.face_normal[f];
+        const double area = mesh.face_area[f];
+        if (mesh.neighbour[f] >= 0)
+          {
+            const unsigned int N = mesh.neighbour[f];
+            const double w = mesh.face_weight(f);
+            const Vector2 d = mesh.cell_center[N] - mesh.cell_center[P];
+            const Vector2 u_f(w * u[P] + (1 - w) * u[N], w * v[P] + (1 - w) * v[N]);
+            const Vector2 grad_f = w * grad_p[P] + (1 - w) * grad_p[N];
+            const double D_f = w * D[P] + (1 - w) * D[N];
+            // u_f = mean(u) - D_f (grad p compact - mean(grad p)) along the face normal
+            F[f] = rho * (u_f.dot(nrm) * area - D_f * ((p[N] - p[P]) - grad_f.dot(d)) * area / nrm.dot(d));
+          }
+        else
+          switch (face_kind[f])
+            {
+              case Kind::velocity_inlet: F[f] = flux[f]; break;
+              case Kind::pressure_outlet:
+              case Kind::total_pressure_inlet:
+                {
+                  const Vector2 d = mesh.face_center[f] - mesh.cell_center[P];
+                  const Vector2 uP(u[P], v[P]);
+                  F[f] = rho * (uP.dot(nrm) * area - D[P] * ((p_b[f] - p[P]) - grad_p[P].dot(d)) * area / nrm.dot(d));
+                  break;
+                }
+              default: F[f] = 0; // walls, axis, symmetry
+            }
+      }
+    return F;
+  }
+
+  /// Solves the SIMPLEC pressure correction for the fluxes F*, corrects fluxes, velocities and
+  /// pressure; returns the sum over cells of |mass imbalance of F*|.
+  double SimplecSolver::Implementation::pressure_correction(std::vector<double> &F)
+  {
+    const std::size_t n = mesh.n_cells();
+    const double rho = fluid.density;
+    double *value = matrix_p.valuePtr();
+    std::fill(value, value + matrix_p.nonZeros(), 0.0);
+    std::vector<double> diag(n, 0.0), imbalance(n, 0.0), coefficient(mesh.n_faces(), 0.0);
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      {
+        const unsigned int P = mesh.owner[f];
+        imbalance[P] += F[f];
+        const Vector2 &nrm = mesh.face_normal[f];
+        if (mesh.neighbour[f] >= 0)
+          {
+            const unsigned int N = mesh.neighbour[f];
+            imbalance[N] -= F[f];
+            const double w = mesh.face_weight(f);
+            const Vector2 d = mesh.cell_center[N] - mesh.cell_center[P];
+            coefficient[f] = rho * (w * D_simplec[P] + (1 - w) * D_simplec[N]) * mesh.face_area[f] / nrm.dot(d);
+            value[owner_row_index[f]] = value[neighbour_row_index[f]] = -coefficient[f];
+            diag[P] += coefficient[f], diag[N] += coefficient[f];
+          }
+        else if (is_pressure_boundary(face_kind[f]))
+          {
+            coefficient[f] = rho * D_simplec[P] * mesh.face_area[f] / distance_to_face(f); // p' = 0 there
+            diag[P] += coefficient[f];
+          }
+      }
+    if (!has_pressure_boundary)
+      diag[0] *= 2; // a closed domain: tie p' of one cell to zero (p' is defined up to a constant)
+    for (std::size_t c = 0; c < n; ++c)
+      value[diagonal_index[c]] = diag[c];
+    Eigen::VectorXd rhs(n);
+    double sum = 0;
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        rhs[c] = -imbalance[c];
+        sum += std::abs(imbalance[c]);
+      }
+    // Conjugate gradients preconditioned by the Cholesky factor of a recent matrix: a new numeric
+    // factorisation (the symbolic one is reused) when the factor has aged so that CG needs more than
+    // a few steps. The tight tolerance keeps the corrected fluxes conservative to round-off.
+    if (!have_pressure_factor || last_cg_iterations > 6)
+      {
+        pressure_factor.factorize(matrix_p);
+        if (pressure_factor.info() != Eigen::Success)
+          throw std::runtime_error("flow: CHOLMOD could not factorise the pressure-correction matrix");
+        have_pressure_factor = true;
+      }
+    pressure_cg.setTolerance(1e-12);
+    pressure_cg.setMaxIterations(200);
+    pressure_cg.compute(matrix_p);
+    const Eigen::VectorXd pc = pressure_cg.solve(rhs);
+    last_cg_iterations = static_cast<unsigned int>(pressure_cg.iterations());
+    if (pressure_cg.info() != Eigen::Success)
+      throw std::runtime_error("flow: the pressure-correction solve did not converge (" +
+                               std::to_string(last_cg_iterations) + " CG iterations)");
+
+    // conservative flux correction
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      if (mesh.neighbour[f] >= 0)
+        F[f] -= coefficient[f] * (pc[mesh.neighbour[f]] - pc[mesh.owner[f]]);
+      else if (is_pressure_boundary(face_kind[f]))
+        F[f] += coefficient[f] * pc[mesh.owner[f]];
+    // velocity and pressure correction
+    std::vector<double> pc_cells(pc.data(), pc.data() + n), pc_b(mesh.n_faces(), 0.0);
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      if (mesh.neighbour[f] < 0 && !is_pressure_boundary(face_kind[f]))
+        pc_b[f] = pc[mesh.owner[f]];
+    const std::vector<Vector2> grad_pc = mesh.gradient(pc_cells, pc_b);
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        u[c] -= D_simplec[c] * grad_pc[c].x();
+        v[c] -= D_simplec[c] * grad_pc[c].y();
+        p[c] += settings.pressure_relaxation * pc[c];
+      }
+    return sum;
+  }
+
+  Residuals SimplecSolver::Implementation::iterate(bool first)
+  {
+    const std::size_t n = mesh.n_cells();
+    update_boundary_values();
+    mesh.gradient(p, p_b, grad_p);
+    Eigen::VectorXd bu, bv;
+    double scale_u = 0, scale_v = 0;
+    const std::vector<double> u_old = u, v_old = v;
+    const double ru = assemble_momentum(matrix_u, bu, u_old, u_b, v_old, 0, scale_u);
+    const double rv = assemble_momentum(matrix_v, bv, v_old, v_b, u_old, 1, scale_v);
+    solve_momentum(matrix_u, bu, u, direct_u, first);
+    solve_momentum(matrix_v, bv, v, direct_v, first);
+    update_boundary_values();
+    std::vector<double> F = rhie_chow_fluxes();
+    // throughput of a pressure-driven flow: its current inflow
+    double inflow = 0, circulation = 0;
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      if (mesh.neighbour[f] < 0)
+        inflow += std::max(0.0, -F[f]);
+      else
+        circulation += std::abs(F[f]);
+    const double throughput = reference_flux > 0 ? reference_flux :
+                              inflow > 0         ? inflow :
+                                                   circulation / std::sqrt(double(n)); // closed domain
+    const double imbalance = pressure_correction(F);
+    flux = F;
+    Residuals r;
+    const double scale = std::max(scale_u, 1e-300);
+    r.u = ru / scale;
+    r.v = rv / scale;
+    r.continuity = imbalance / std::max(throughput, 1e-300);
+    return r;
+  }
+
+  // ---- public interface ----------------------------------------------------------------------
+
+  SimplecSolver::SimplecSolver(const FvMesh &mesh, const FluidProperties &fluid,
+                               const std::map<std::string, BoundaryCondition> &boundaries,
+                               const FlowSolverParameters &settings)
+    : impl(std::make_unique<Implementation>(mesh, fluid, boundaries, settings))
+  {}
+
+  SimplecSolver::~SimplecSolver() = default;
+
+  SolveReport SimplecSolver::solve()
+  {
+    auto &d = *impl;
+    SolveReport report;
+    const double tolerance = d.settings.tolerance;
+    for (unsigned int it = 1;; ++it)
+      {
+        const Residuals r = d.iterate(it == 1);
+        report.iterations = it;
+        report.residuals = r;
+        d.last = r;
+        const bool bad = !std::isfinite(r.u) || !std::isfinite(r.v) || !std::isfinite(r.continuity) ||
+                         (it > 10 && (r.u > 1e8 || r.continuity > 1e8));
+        if (bad)
+          {
+            if (!failure_output.empty())
+              write_vtu(failure_output);
+            throw std::runtime_error("flow: " + d.mesh.source + ": the solution diverged at iteration " +
+                                     std::to_string(it) + " (residuals u " + format_number(r.u) + ", v " +
+                                     format_number(r.v) + ", continuity " + format_number(r.continuity) + ")" +
+                                     (failure_output.empty() ? "" : "; fields in " + failure_output));
+          }
+        if (d.settings.report_interval > 0 && it % d.settings.report_interval == 0)
+          std::fprintf(stderr, "  iteration %u: residuals u %.3e, v %.3e, continuity %.3e\n", it, r.u, r.v,
+                       r.continuity);
+        if (r.u < tolerance && r.v < tolerance && r.continuity < tolerance)
+          break;
+        if (it >= d.settings.max_iterations)
+          {
+            if (!failure_output.empty())
+              write_vtu(failure_output);
+            throw std::runtime_error("flow: " + d.mesh.source + ": not converged in " + std::to_string(it) +
+                                     " iterations (residuals u " + format_number(r.u) + ", v " + format_number(r.v) +
+                                     ", continuity " + format_number(r.continuity) + "; tolerance " +
+                                     format_number(tolerance) + ")");
+          }
+      }
+    d.update_boundary_values();
+    d.grad_p = d.mesh.gradient(d.p, d.p_b);
+    d.update_boundary_values();
+    return report;
+  }
+
+  const std::vector<double> &SimplecSolver::velocity_x() const { return impl->u; }
+  const std::vector<double> &SimplecSolver::velocity_y() const { return impl->v; }
+  const std::vector<double> &SimplecSolver::pressure() const { return impl->p; }
+  const std::vector<double> &SimplecSolver::mass_flux() const { return impl->flux; }
+  double SimplecSolver::boundary_pressure(std::size_t f) const { return impl->p_b[f]; }
+  Vector2 SimplecSolver::boundary_velocity(std::size_t f) const { return Vector2(impl->u_b[f], impl->v_b[f]); }
+
+  namespace
+  {
+    /// Per radian (axisymmetric) or per unit depth (planar) -> the whole device
+    double revolution(const FvMesh &mesh)
+    {
+      return mesh.geometry == Geometry::axisymmetric ? 2 * units::pi : 1.0;
+    }
+
+    const std::vector<unsigned int> &faces_of(const FvMesh &mesh, const std::string &patch)
+    {
+      const int k = mesh.patch_index(patch);
+      if (k < 0)
+        throw std::invalid_argument("flow: no boundary `" + patch + "' in " + mesh.source);
+      return mesh.patch_faces[k];
+    }
+  } // namespace
+
+  double SimplecSolver::flow_rate(const std::string &patch) const
+  {
+    double q = 0;
+    for (unsigned int f : faces_of(impl->mesh, patch))
+      q += impl->flux[f];
+    return q / impl->fluid.density * revolution(impl->mesh);
+  }
+
+  double SimplecSolver::mean_pressure(const std::string &patch) const
+  {
+    double sum = 0, area = 0;
+    for (unsigned int f : faces_of(impl->mesh, patch))
+      {
+        sum += impl->p_b[f] * impl->mesh.face_area[f];
+        area += impl->mesh.face_area[f];
+      }
+    return area > 0 ? sum / area : 0.0;
+  }
+
+  double SimplecSolver::pressure_force(const std::string &patch, const Vector2 &direction, double p_reference) const
+  {
+    double F = 0;
+    for (unsigned int f : faces_of(impl->mesh, patch))
+      F += (impl->p_b[f] - p_reference) * impl->mesh.face_normal[f].dot(direction) * impl->mesh.face_area[f];
+    return F * revolution(impl->mesh);
+  }
+
+  double SimplecSolver::throughput() const
+  {
+    double inflow = 0;
+    for (std::size_t f = 0; f < impl->mesh.n_faces(); ++f)
+      if (impl->mesh.neighbour[f] < 0)
+        inflow += std::max(0.0, -impl->flux[f]);
+    return inflow;
+  }
+
+  double SimplecSolver::max_cell_imbalance() const
+  {
+    const auto &mesh = impl->mesh;
+    std::vector<double> imbalance(mesh.n_cells(), 0.0);
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      {
+        imbalance[mesh.owner[f]] += impl->flux[f];
+        if (mesh.neighbour[f] >= 0)
+          imbalance[mesh.neighbour[f]] -= impl->flux[f];
+      }
+    double largest = 0;
+    for (double m : imbalance)
+      largest = std::max(largest, std::abs(m));
+    return largest / std::max(throughput(), 1e-300);
+  }
+
+  double SimplecSolver::net_imbalance() const
+  {
+    double net = 0;
+    for (std::size_t f = 0; f < impl->mesh.n_faces(); ++f)
+      if (impl->mesh.neighbour[f] < 0)
+        net += impl->flux[f];
+    return std::abs(net) / std::max(throughput(), 1e-300);
+  }
+
+  void SimplecSolver::write_vtu(const std::string &filename) const
+  {
+    const auto &d = *impl;
+    write_fv_vtu(filename, d.mesh, d.p, d.u, d.v, d.p_b, d.u_b, d.v_b);
+  }
+} // namespace servodrift::flow

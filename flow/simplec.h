@@ -1,0 +1,109 @@
+#pragma once
+// Steady incompressible Navier-Stokes on the finite-volume mesh of fv_mesh.h: cell-centred,
+// collocated velocity and pressure, Rhie-Chow face fluxes, SIMPLEC pressure-velocity coupling
+// (the paper's choice, [K22] section 7 of model.md), planar or axisymmetric (the hoop term
+// -mu u_r/r^2 in the radial momentum, the axis as a boundary).
+//
+// Per iteration (`solve'): momentum for u and v with under-relaxation (upwind implicitly, bounded
+// linear upwind as a deferred correction; central diffusion with an explicit non-orthogonal
+// correction; least-squares cell gradients); Rhie-Chow fluxes; the pressure-correction equation,
+// symmetric positive definite, by CHOLMOD with its symbolic analysis once per mesh; conservative
+// flux correction, velocity and pressure correction. Linear algebra on Eigen sparse matrices whose
+// pattern is built once; every assembly writes the values in place.
+#include "common/parameters/flow_solver.h"
+#include "flow/fv_mesh.h"
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace servodrift::flow
+{
+  struct FluidProperties
+  {
+    double density;   ///< rho [kg/m^3]
+    double viscosity; ///< dynamic viscosity mu [Pa*s]
+  };
+
+  struct BoundaryCondition
+  {
+    enum class Kind
+    {
+      wall,                 ///< no slip: the wall's velocity (default at rest)
+      velocity_inlet,       ///< a given velocity profile
+      total_pressure_inlet, ///< p_0 = p + rho |u|^2/2 given, velocity from the inside
+      pressure_outlet,      ///< static pressure given, velocity from the inside
+      axis,                 ///< r = 0 of an axisymmetric domain
+      symmetry,             ///< symmetry plane: no normal velocity, no shear
+    } kind = Kind::wall;
+    std::function<Vector2(const Vector2 &x)> velocity; ///< wall or inlet velocity at a boundary point [m/s]
+    double pressure = 0;                                 ///< total or static pressure [Pa]
+
+    static BoundaryCondition wall(Vector2 moving = Vector2::Zero());
+    static BoundaryCondition velocity_inlet(std::function<Vector2(const Vector2 &)> profile);
+    static BoundaryCondition total_pressure_inlet(double total_pressure);
+    static BoundaryCondition pressure_outlet(double static_pressure);
+    static BoundaryCondition axis();
+    static BoundaryCondition symmetry();
+  };
+
+  struct Residuals
+  {
+    double u = 0, v = 0;      ///< scaled momentum residuals
+    double continuity = 0;    ///< sum of cell mass imbalances / throughput
+  };
+
+  struct SolveReport
+  {
+    unsigned int iterations = 0;
+    Residuals residuals;
+  };
+
+  class SimplecSolver
+  {
+  public:
+    /// Every boundary patch of the mesh needs a condition and every condition a patch; the flow
+    /// needs a driver (an inlet or a moving wall) and an inlet needs an outlet. Throws InputError
+    /// naming the mesh and the patch otherwise, or for a non-positive density or viscosity.
+    SimplecSolver(const FvMesh &mesh, const FluidProperties &fluid,
+                  const std::map<std::string, BoundaryCondition> &boundaries, const FlowSolverParameters &settings);
+    ~SimplecSolver();
+
+    /// Iterates until the scaled residuals fall below the tolerance. Throws std::runtime_error if
+    /// the iteration limit is reached, or at a NaN or divergence (naming the iteration; with
+    /// `failure_output' set, the fields are written there as VTU first).
+    SolveReport solve();
+    std::string failure_output;
+
+    const std::vector<double> &velocity_x() const;
+    const std::vector<double> &velocity_y() const;
+    const std::vector<double> &pressure() const;
+    /// Mass flux rho u.S through each face, out of the owner [kg/s, per radian if axisymmetric].
+    const std::vector<double> &mass_flux() const;
+    /// Face values at the boundary (index: face) of the last iteration.
+    double boundary_pressure(std::size_t face) const;
+    Vector2 boundary_velocity(std::size_t face) const;
+
+    /// Volumetric flow out through a patch [m^3/s]: a full revolution if axisymmetric, unit depth if planar.
+    double flow_rate(const std::string &patch) const;
+    /// Area-weighted mean pressure on a patch [Pa].
+    double mean_pressure(const std::string &patch) const;
+    /// Integral of (p - p_reference) n . e over a patch, n out of the fluid [N]: the pressure force
+    /// of the fluid on the wall along e (a full revolution if axisymmetric).
+    double pressure_force(const std::string &patch, const Vector2 &direction, double p_reference = 0) const;
+
+    /// Mass balance of the converged fields: the largest |sum of face fluxes| of a cell and the net
+    /// flux out of the domain, both relative to the throughput (inflow) [1].
+    double max_cell_imbalance() const;
+    double net_imbalance() const;
+    double throughput() const; ///< inflow mass flux [kg/s per radian or per unit depth]
+
+    /// Pressure, velocity, cell id and, on boundary line cells, the boundary id, as VTU (VTK library).
+    void write_vtu(const std::string &filename) const;
+
+  private:
+    struct Implementation;
+    std::unique_ptr<Implementation> impl;
+  };
+} // namespace servodrift::flow
