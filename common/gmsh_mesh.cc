@@ -13,6 +13,11 @@
 #include <stdexcept>
 #include <unordered_map>
 
+// gmsh 4.8's .geo lexer keeps the unread rest of a file with a syntax error and feeds it to the
+// next file parsed, even across gmsh::finalize (every later template then fails). It exports the
+// function that flushes it, though its API does not declare it.
+void gmsh_yyflush();
+
 namespace servodrift
 {
   namespace
@@ -35,8 +40,10 @@ namespace servodrift
         gmsh::logger::stop();
         gmsh::finalize();
       }
+      /// gmsh's messages that start with "Error", joined; also leaves the parser clean for the next file.
       std::string last_errors()
       {
+        gmsh_yyflush();
         std::vector<std::string> log;
         gmsh::logger::get(log);
         std::string errors;
@@ -246,6 +253,13 @@ namespace servodrift
     const std::string extension = std::filesystem::path(path).extension().string();
     if (extension != ".msh" && extension != ".geo")
       throw InputError(path + ": not a gmsh file (use a .msh mesh or a .geo geometry)");
+    if (extension == ".msh")
+      {
+        std::string first_line;
+        std::getline(std::ifstream(path), first_line);
+        if (first_line.rfind("$MeshFormat", 0) != 0)
+          throw InputError(path + ": not a gmsh mesh (a .msh file starts with $MeshFormat)");
+      }
     GmshSession session;
     try
       {

@@ -436,10 +436,10 @@ namespace servodrift::flow
           direct.analyzePattern(A); // symbolic analysis once per mesh
         direct.factorize(A);
         if (direct.info() != Eigen::Success)
-          throw std::runtime_error("flow: UMFPACK could not factorise the momentum matrix");
+          throw std::runtime_error("UMFPACK could not factorise the momentum matrix");
         x = direct.solve(b);
         if (direct.info() != Eigen::Success)
-          throw std::runtime_error("flow: UMFPACK momentum solve failed");
+          throw std::runtime_error("UMFPACK momentum solve failed");
         return;
       }
     // BiCGSTAB on the correction, so that its tolerance is relative to the current residual
@@ -452,7 +452,7 @@ namespace servodrift::flow
       solver.compute(A);
       const Eigen::VectorXd dx = solver.solve(r);
       if (solver.info() != Eigen::Success)
-        throw std::runtime_error("flow: BiCGSTAB did not converge on the momentum equation (" +
+        throw std::runtime_error("BiCGSTAB did not converge on the momentum equation (" +
                                  std::to_string(solver.iterations()) + " iterations, relative residual " +
                                  format_number(solver.error()) + ")");
       x += dx;
@@ -549,21 +549,30 @@ namespace servodrift::flow
     // Conjugate gradients preconditioned by the Cholesky factor of a recent matrix: a new numeric
     // factorisation (the symbolic one is reused) when the factor has aged so that CG needs more than
     // a few steps. The tight tolerance keeps the corrected fluxes conservative to round-off.
-    if (!have_pressure_factor || last_cg_iterations > 6)
-      {
-        pressure_factor.factorize(matrix_p);
-        if (pressure_factor.info() != Eigen::Success)
-          throw std::runtime_error("flow: CHOLMOD could not factorise the pressure-correction matrix");
-        have_pressure_factor = true;
-      }
+    auto refactorize = [&] {
+      pressure_factor.factorize(matrix_p);
+      if (pressure_factor.info() != Eigen::Success)
+        throw std::runtime_error("CHOLMOD could not factorise the pressure-correction matrix");
+      have_pressure_factor = true;
+    };
+    bool fresh = !have_pressure_factor || last_cg_iterations > 6;
+    if (fresh)
+      refactorize();
     pressure_cg.setTolerance(1e-12);
     pressure_cg.setMaxIterations(200);
     pressure_cg.compute(matrix_p);
-    const Eigen::VectorXd pc = pressure_cg.solve(rhs);
+    Eigen::VectorXd pc = pressure_cg.solve(rhs);
+    if (pressure_cg.info() != Eigen::Success && !fresh)
+      {
+        // the matrix has moved too far from the old factor's: renew it and solve again
+        refactorize();
+        pc = pressure_cg.solve(rhs);
+      }
     last_cg_iterations = static_cast<unsigned int>(pressure_cg.iterations());
     if (pressure_cg.info() != Eigen::Success)
-      throw std::runtime_error("flow: the pressure-correction solve did not converge (" +
-                               std::to_string(last_cg_iterations) + " CG iterations)");
+      throw std::runtime_error("the pressure-correction solve did not converge (" +
+                               std::to_string(last_cg_iterations) + " CG iterations, relative residual " +
+                               format_number(pressure_cg.error()) + ")");
 
     // conservative flux correction
     for (std::size_t f = 0; f < mesh.n_faces(); ++f)
@@ -637,7 +646,19 @@ namespace servodrift::flow
     const double tolerance = d.settings.tolerance;
     for (unsigned int it = 1;; ++it)
       {
-        const Residuals r = d.iterate(it == 1);
+        Residuals r;
+        try
+          {
+            r = d.iterate(it == 1);
+          }
+        catch (const std::runtime_error &e) // a linear solve failed: the iteration is diverging
+          {
+            if (!failure_output.empty())
+              write_vtu(failure_output);
+            throw std::runtime_error("flow: " + d.mesh.source + ": the solution diverged at iteration " +
+                                     std::to_string(it) + " (" + e.what() + ")" +
+                                     (failure_output.empty() ? "" : "; fields in " + failure_output));
+          }
         report.iterations = it;
         report.residuals = r;
         d.last = r;

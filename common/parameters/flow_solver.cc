@@ -14,7 +14,7 @@ namespace servodrift
                       "Face values of the convected velocity: upwind (first order, as in [K22]) or "
                       "bounded-linear-upwind (second order, the upwind cell's gradient limited by "
                       "Barth-Jespersen, as a deferred correction). [-]");
-    prm.declare_entry("Velocity relaxation", "0.8", Patterns::Double(0.01, 1),
+    prm.declare_entry("Velocity relaxation", "0.9", Patterns::Double(0.01, 1),
                       "Under-relaxation alpha_u of the momentum equations (SIMPLEC). [1]");
     prm.declare_entry("Pressure relaxation", "1", Patterns::Double(0.01, 1),
                       "Under-relaxation of the pressure correction; SIMPLEC needs none (1). [1]");

@@ -1,0 +1,508 @@
+// Verification of the finite-volume solver core (flow/fv_mesh, flow/simplec) against closed forms
+// and published data, issue 4. Tolerances are the issue's; measured values are in doc/validation.md
+// (the tests print them).
+//
+// - plane Poiseuille and axisymmetric Hagen-Poiseuille flow: pressure drop and velocity profile
+//   within 0.5 % on the default mesh, and second-order convergence (observed rate > 1.8 between
+//   the three meshes; the schemes are formally second order, so 2 is expected and 1.8 leaves room
+//   for the pre-asymptotic coarse mesh);
+// - the lid-driven cavity at Re 100 and 400 against Ghia, Ghia and Shin (1982), within 2 % of the
+//   lid velocity;
+// - creeping radial outflow between parallel discs: dp = 6 mu Q ln(r2/r1)/(pi h^3) within 1 %;
+// - mass conservation of the converged fields; symmetry planes, total-pressure inlets, triangles;
+// - VTU output read back with VTK's reader; bad input refused with messages naming what to fix.
+#include "common/error.h"
+#include "common/gmsh_mesh.h"
+#include "common/output_files.h"
+#include "common/units.h"
+#include "flow/fv_mesh.h"
+#include "flow/simplec.h"
+#include "tests/support/test_support.h"
+
+#include <gtest/gtest.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkStringArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace servodrift::flow
+{
+  namespace
+  {
+    const std::string source_dir = SERVODRIFT_SOURCE_DIR;
+
+    /// The rectangle [x0, x1] x [y0, y1] of tests/verification/meshes/rectangle.geo.
+    FvMesh rectangle(Geometry geometry, double x0, double x1, double y0, double y1, int nx, int ny, bool triangles = false)
+    {
+      static const GmshTemplate geo{"rectangle.geo", read_file(source_dir + "/tests/verification/meshes/rectangle.geo"), 1.0};
+      const PlanarMesh m = mesh_template_all_groups(
+        geo, {{"x0", x0}, {"x1", x1}, {"y0", y0}, {"y1", y1}, {"nx", double(nx)}, {"ny", double(ny)}, {"tri", triangles ? 1.0 : 0.0}});
+      return FvMesh(m, geometry, "rectangle.geo");
+    }
+
+    FlowSolverParameters settings(double tolerance = 1e-8)
+    {
+      FlowSolverParameters s = test::valve().flow_solver;
+      s.tolerance = tolerance;
+      return s;
+    }
+
+    /// Second-order reconstruction of a cell field at x: the nearest cell's value plus its
+    /// least-squares gradient (boundary values from the solver).
+    struct Sampler
+    {
+      const FvMesh &mesh;
+      std::vector<double> value;
+      std::vector<Vector2> gradient;
+      Sampler(const FvMesh &m, const std::vector<double> &cells, const std::vector<double> &boundary)
+        : mesh(m), value(cells), gradient(m.gradient(cells, boundary))
+      {}
+      double operator()(const Vector2 &x) const
+      {
+        std::size_t best = 0;
+        for (std::size_t c = 1; c < mesh.n_cells(); ++c)
+          if ((mesh.cell_center[c] - x).squaredNorm() < (mesh.cell_center[best] - x).squaredNorm())
+            best = c;
+        return value[best] + gradient[best].dot(x - mesh.cell_center[best]);
+      }
+    };
+
+    std::vector<double> boundary_component(const SimplecSolver &s, const FvMesh &mesh, int component)
+    {
+      std::vector<double> b(mesh.n_faces(), 0.0);
+      for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+        if (mesh.neighbour[f] < 0)
+          b[f] = s.boundary_velocity(f)[component];
+      return b;
+    }
+
+    /// Fully developed laminar flow through a channel (planar, walls at y = 0 and H) or a pipe
+    /// (axisymmetric, axis at r = 0, wall at r = R = H), mean velocity U, length L, parabolic inlet.
+    struct DevelopedFlowResult
+    {
+      double pressure_drop_error; ///< relative to the closed form
+      double profile_error;       ///< rms of u - u_exact over the cells at mid-length, / u_max
+      double net_imbalance, max_cell_imbalance;
+      unsigned int iterations;
+    };
+
+    DevelopedFlowResult developed_flow(Geometry geometry, int nx, int ny, bool triangles = false)
+    {
+      const double L = 4, H = 1, U = 1, mu = 0.05, rho = 1; // Re = rho U H / mu = 20
+      const bool pipe = geometry == Geometry::axisymmetric;
+      const FvMesh mesh = rectangle(geometry, 0, L, 0, H, nx, ny, triangles);
+      auto exact = [&](double y) { return pipe ? 2 * U * (1 - y * y / (H * H)) : 6 * U * y * (H - y) / (H * H); };
+      std::map<std::string, BoundaryCondition> bc{
+        {"left", BoundaryCondition::velocity_inlet([&](const Vector2 &x) { return Vector2(exact(x.y()), 0); })},
+        {"right", BoundaryCondition::pressure_outlet(0)},
+        {"top", BoundaryCondition::wall()},
+        {"bottom", pipe ? BoundaryCondition::axis() : BoundaryCondition::wall()}};
+      SimplecSolver solver(mesh, {rho, mu}, bc, settings());
+      const SolveReport report = solver.solve();
+      // E: dp = 12 mu U L / H^2 (channel), 8 mu U L / R^2 (Hagen-Poiseuille)
+      const double dp_exact = (pipe ? 8 : 12) * mu * U * L / (H * H);
+      const double dp = solver.mean_pressure("left") - solver.mean_pressure("right");
+      // profile at mid-length, sampled on a line of points
+      Sampler u(mesh, solver.velocity_x(), boundary_component(solver, mesh, 0));
+      double sum = 0;
+      const int samples = 50;
+      for (int k = 0; k < samples; ++k)
+        {
+          const double y = (k + 0.5) / samples * H;
+          sum += std::pow(u(Vector2(L / 2, y)) - exact(y), 2);
+        }
+      return {dp / dp_exact - 1, std::sqrt(sum / samples) / exact(pipe ? 0 : H / 2), solver.net_imbalance(),
+              solver.max_cell_imbalance(), report.iterations};
+    }
+
+    void expect_second_order(Geometry geometry, const std::string &name)
+    {
+      const int nx[3] = {40, 80, 160}, ny[3] = {10, 20, 40};
+      DevelopedFlowResult r[3];
+      for (int k = 0; k < 3; ++k)
+        r[k] = developed_flow(geometry, nx[k], ny[k]);
+      std::printf("%s: cells | dp error | rate | profile error | rate\n", name.c_str());
+      for (int k = 0; k < 3; ++k)
+        std::printf("  %5d | %10.3e | %4.2f | %10.3e | %4.2f\n", nx[k] * ny[k], r[k].pressure_drop_error,
+                    k ? std::log2(std::abs(r[k - 1].pressure_drop_error / r[k].pressure_drop_error)) : 0.0,
+                    r[k].profile_error, k ? std::log2(r[k - 1].profile_error / r[k].profile_error) : 0.0);
+      for (int k = 1; k < 3; ++k)
+        {
+          EXPECT_GT(std::log2(std::abs(r[k - 1].pressure_drop_error / r[k].pressure_drop_error)), 1.8) << name;
+          EXPECT_GT(std::log2(r[k - 1].profile_error / r[k].profile_error), 1.8) << name;
+        }
+    }
+  } // namespace
+
+  // The default verification mesh: 128 x 32 square cells over L = 4 H. The pressure drop's error is
+  // that of the wall shear of the wall cells, second order: -0.51 % with 20 cells across, so 32.
+  TEST(FlowCore, PlanePoiseuilleWithinHalfAPercent)
+  {
+    const DevelopedFlowResult r = developed_flow(Geometry::planar, 128, 32);
+    std::printf("channel 128x32: dp error %.3e, profile error %.3e, %u iterations\n", r.pressure_drop_error,
+                r.profile_error, r.iterations);
+    EXPECT_LT(std::abs(r.pressure_drop_error), 5e-3);
+    EXPECT_LT(r.profile_error, 5e-3);
+  }
+
+  TEST(FlowCore, HagenPoiseuilleWithinHalfAPercent)
+  {
+    const DevelopedFlowResult r = developed_flow(Geometry::axisymmetric, 128, 32);
+    std::printf("pipe 128x32: dp error %.3e, profile error %.3e, %u iterations\n", r.pressure_drop_error,
+                r.profile_error, r.iterations);
+    EXPECT_LT(std::abs(r.pressure_drop_error), 5e-3);
+    EXPECT_LT(r.profile_error, 5e-3);
+  }
+
+  TEST(FlowCore, PoiseuilleConvergesAtSecondOrder)
+  {
+    expect_second_order(Geometry::planar, "channel");
+  }
+
+  TEST(FlowCore, HagenPoiseuilleConvergesAtSecondOrder)
+  {
+    expect_second_order(Geometry::axisymmetric, "pipe");
+  }
+
+  // Continuity: the SIMPLEC correction makes the fluxes conservative to the pressure solve's
+  // tolerance (1e-12), so the limits of the issue (global 1e-10, cell 1e-8 of the throughput) hold
+  // with room.
+  TEST(FlowCore, ConvergedFieldsConserveMass)
+  {
+    for (Geometry g : {Geometry::planar, Geometry::axisymmetric})
+      {
+        const DevelopedFlowResult r = developed_flow(g, 40, 10);
+        std::printf("imbalance: net %.2e, largest cell %.2e\n", r.net_imbalance, r.max_cell_imbalance);
+        EXPECT_LT(r.net_imbalance, 1e-10);
+        EXPECT_LT(r.max_cell_imbalance, 1e-8);
+      }
+  }
+
+  // Unstructured triangles: every face non-orthogonal to its centre line, so the non-orthogonal
+  // correction and the least-squares gradients carry the accuracy. 1 % on a mesh of the same size
+  // as the quadrilateral default, and the error falls as the mesh is refined.
+  TEST(FlowCore, PoiseuilleOnTriangles)
+  {
+    const DevelopedFlowResult coarse = developed_flow(Geometry::planar, 40, 10, true);
+    const DevelopedFlowResult fine = developed_flow(Geometry::planar, 80, 20, true);
+    std::printf("channel, triangles: dp error %.3e -> %.3e, profile error %.3e -> %.3e\n", coarse.pressure_drop_error,
+                fine.pressure_drop_error, coarse.profile_error, fine.profile_error);
+    EXPECT_LT(std::abs(fine.pressure_drop_error), 1e-2);
+    EXPECT_LT(fine.profile_error, 1e-2);
+    EXPECT_LT(fine.profile_error, coarse.profile_error);
+    EXPECT_LT(fine.max_cell_imbalance, 1e-8);
+  }
+
+  // A symmetry plane at y = 0 of a half channel gives the whole channel's pressure drop.
+  TEST(FlowCore, SymmetryPlaneHalvesTheChannel)
+  {
+    const double L = 4, H = 1, U = 1, mu = 0.05;
+    const FvMesh mesh = rectangle(Geometry::planar, 0, L, 0, H / 2, 128, 16);
+    std::map<std::string, BoundaryCondition> bc{
+      {"left", BoundaryCondition::velocity_inlet([&](const Vector2 &x) { return Vector2(6 * U * x.y() * (H - x.y()) / (H * H), 0); })},
+      {"right", BoundaryCondition::pressure_outlet(0)},
+      {"top", BoundaryCondition::symmetry()},
+      {"bottom", BoundaryCondition::wall()}};
+    // the plane of symmetry at y = H/2 is the top
+    SimplecSolver solver(mesh, {1, mu}, bc, settings());
+    solver.solve();
+    const double dp = solver.mean_pressure("left") - solver.mean_pressure("right");
+    EXPECT_NEAR(dp / (12 * mu * U * L / (H * H)), 1, 5e-3);
+  }
+
+  // A total-pressure inlet: creeping pipe flow (Re = 1e-3, so the dynamic pressure is 1e-5 of the
+  // drop) driven by p0 - p_out carries the Hagen-Poiseuille flow rate pi R^4 dp / (8 mu L).
+  TEST(FlowCore, TotalPressureInletCarriesTheHagenPoiseuilleFlow)
+  {
+    const double L = 4, R = 1, mu = 1, rho = 1e-3, dp = 8 * mu * 1 * L / (R * R); // U = 1
+    const FvMesh mesh = rectangle(Geometry::axisymmetric, 0, L, 0, R, 40, 20);
+    std::map<std::string, BoundaryCondition> bc{{"left", BoundaryCondition::total_pressure_inlet(dp)},
+                                                {"right", BoundaryCondition::pressure_outlet(0)},
+                                                {"top", BoundaryCondition::wall()},
+                                                {"bottom", BoundaryCondition::axis()}};
+    SimplecSolver solver(mesh, {rho, mu}, bc, settings());
+    solver.solve();
+    const double Q = solver.flow_rate("right");
+    const double Q_exact = units::pi * std::pow(R, 4) * dp / (8 * mu * L);
+    std::printf("total-pressure inlet: Q/Q_HP - 1 = %.3e\n", Q / Q_exact - 1);
+    EXPECT_NEAR(Q / Q_exact, 1, 5e-3);
+    EXPECT_NEAR(solver.flow_rate("left") / Q, -1, 1e-10);
+  }
+
+  // The flapper land in miniature: creeping radial outflow between parallel discs, x across the
+  // gap h, r from r1 (inlet, the lubrication profile) to r2 (outlet). The profile
+  // v_r = 6 Q/(2 pi r h) (z/h)(1 - z/h) solves the Stokes equations exactly (the hoop term cancels
+  // the 1/r part of the Laplacian), so dp = 6 mu Q ln(r2/r1)/(pi h^3); tolerance 1 % (the issue's).
+  // Dimensions of RV-1's land (r1 = D_N/2, r2 = D_land/2, h = x0), Reynolds number 1e-3.
+  TEST(FlowCore, RadialOutflowBetweenDiscs)
+  {
+    const double h = 40e-6, r1 = 0.20e-3, r2 = 0.35e-3, mu = 0.01, rho = 850;
+    const double Re = 1e-3;                              // rho V h / mu at the inlet, V the mean velocity
+    const double Q = Re * mu / rho * 2 * units::pi * r1; // V = Re mu / (rho h) through 2 pi r1 h
+    const FvMesh mesh = rectangle(Geometry::axisymmetric, 0, h, r1, r2, 32, 48); // 32 cells across the gap
+    std::map<std::string, BoundaryCondition> bc{
+      {"bottom", BoundaryCondition::velocity_inlet([&](const Vector2 &x) {
+         const double z = x.x() / h;
+         return Vector2(0, 6 * Q / (2 * units::pi * x.y() * h) * z * (1 - z));
+       })},
+      {"top", BoundaryCondition::pressure_outlet(0)},
+      {"left", BoundaryCondition::wall()},
+      {"right", BoundaryCondition::wall()}};
+    SimplecSolver solver(mesh, {rho, mu}, bc, settings());
+    solver.solve();
+    // the flow rate the inlet faces carry (the midpoint rule on the parabola: 1e-3 above Q)
+    const double Q_inlet = -solver.flow_rate("bottom");
+    const double dp = solver.mean_pressure("bottom") - solver.mean_pressure("top");
+    const double dp_exact = 6 * mu * Q_inlet * std::log(r2 / r1) / (units::pi * std::pow(h, 3));
+    std::printf("radial outflow: Q %.4e m^3/s, dp %.6g Pa, closed form %.6g Pa, error %.3e\n", Q_inlet, dp, dp_exact,
+                dp / dp_exact - 1);
+    EXPECT_NEAR(Q_inlet / Q, 1, 2e-3);
+    EXPECT_NEAR(solver.flow_rate("top") / Q_inlet, 1, 1e-10);
+    EXPECT_NEAR(dp / dp_exact, 1, 1e-2);
+  }
+
+  namespace
+  {
+    struct GhiaPoint
+    {
+      char table; // u or v
+      double coordinate, velocity;
+      bool use;
+    };
+
+    std::vector<GhiaPoint> ghia(int re)
+    {
+      std::ifstream in(source_dir + "/tests/verification/data/ghia1982.txt");
+      std::vector<GhiaPoint> points;
+      std::string line;
+      while (std::getline(in, line))
+        {
+          if (line.empty() || line[0] == '#')
+            continue;
+          std::istringstream s(line);
+          GhiaPoint p;
+          int r, use;
+          s >> p.table >> r >> p.coordinate >> p.velocity >> use;
+          p.use = use != 0;
+          if (r == re)
+            points.push_back(p);
+        }
+      return points;
+    }
+
+    /// Largest deviation from Ghia's centre-line velocities, in lid velocities (unit cavity, U = 1).
+    double cavity_deviation(int re, int n)
+    {
+      const FvMesh mesh = rectangle(Geometry::planar, 0, 1, 0, 1, n, n);
+      std::map<std::string, BoundaryCondition> bc{{"top", BoundaryCondition::wall(Vector2(1, 0))},
+                                                  {"left", BoundaryCondition::wall()},
+                                                  {"right", BoundaryCondition::wall()},
+                                                  {"bottom", BoundaryCondition::wall()}};
+      SimplecSolver solver(mesh, {1, 1.0 / re}, bc, settings(1e-7));
+      const SolveReport report = solver.solve();
+      Sampler u(mesh, solver.velocity_x(), boundary_component(solver, mesh, 0));
+      Sampler v(mesh, solver.velocity_y(), boundary_component(solver, mesh, 1));
+      double worst = 0;
+      for (const GhiaPoint &g : ghia(re))
+        {
+          const double ours = g.table == 'u' ? u(Vector2(0.5, g.coordinate)) : v(Vector2(g.coordinate, 0.5));
+          const double deviation = std::abs(ours - g.velocity);
+          if (!g.use)
+            std::printf("  excluded: Re %d %c(%.4f) = %.5f, Ghia %.5f\n", re, g.table, g.coordinate, ours, g.velocity);
+          else
+            worst = std::max(worst, deviation);
+        }
+      std::printf("cavity Re %d, %dx%d: %u iterations, largest deviation from Ghia %.4f U\n", re, n, n,
+                  report.iterations, worst);
+      return worst;
+    }
+  } // namespace
+
+  TEST(FlowCore, LidDrivenCavityRe100MatchesGhia)
+  {
+    ASSERT_EQ(ghia(100).size(), 34u);
+    EXPECT_LT(cavity_deviation(100, 64), 0.02);
+  }
+
+  TEST(FlowCore, LidDrivenCavityRe400MatchesGhia)
+  {
+    ASSERT_EQ(ghia(400).size(), 34u);
+    EXPECT_LT(cavity_deviation(400, 64), 0.02);
+  }
+
+  TEST(FlowCore, VtuReadsBackWithVtk)
+  {
+    const FvMesh mesh = rectangle(Geometry::axisymmetric, 0, 4, 0, 1, 12, 4);
+    std::map<std::string, BoundaryCondition> bc{
+      {"left", BoundaryCondition::velocity_inlet([](const Vector2 &x) { return Vector2(2 * (1 - x.y() * x.y()), 0); })},
+      {"right", BoundaryCondition::pressure_outlet(0)},
+      {"top", BoundaryCondition::wall()},
+      {"bottom", BoundaryCondition::axis()}};
+    SimplecSolver solver(mesh, {1, 0.05}, bc, settings());
+    solver.solve();
+    const std::string file = test::temporary_directory() + "/pipe.vtu";
+    solver.write_vtu(file);
+
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    vtkUnstructuredGrid *grid = reader->GetOutput();
+    ASSERT_NE(grid, nullptr);
+    const std::size_t n_boundary = 2 * (12 + 4);
+    ASSERT_EQ(static_cast<std::size_t>(grid->GetNumberOfCells()), mesh.n_cells() + n_boundary);
+    vtkDataArray *p = grid->GetCellData()->GetArray("p");
+    vtkDataArray *velocity = grid->GetCellData()->GetArray("velocity");
+    vtkDataArray *cell_id = grid->GetCellData()->GetArray("cell_id");
+    vtkDataArray *boundary_id = grid->GetCellData()->GetArray("boundary_id");
+    ASSERT_TRUE(p && velocity && cell_id && boundary_id);
+    EXPECT_EQ(velocity->GetNumberOfComponents(), 3);
+    for (std::size_t c = 0; c < mesh.n_cells(); ++c)
+      {
+        EXPECT_DOUBLE_EQ(p->GetComponent(c, 0), solver.pressure()[c]);
+        EXPECT_DOUBLE_EQ(velocity->GetComponent(c, 0), solver.velocity_x()[c]);
+        EXPECT_DOUBLE_EQ(velocity->GetComponent(c, 1), solver.velocity_y()[c]);
+        EXPECT_EQ(cell_id->GetComponent(c, 0), double(c));
+        EXPECT_EQ(boundary_id->GetComponent(c, 0), -1.0);
+      }
+    // the boundary line cells carry their patch's id, whose name is in the field data
+    auto *names = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("boundary_names"));
+    ASSERT_NE(names, nullptr);
+    std::map<std::string, int> count;
+    for (std::size_t c = mesh.n_cells(); c < mesh.n_cells() + n_boundary; ++c)
+      {
+        const int id = static_cast<int>(boundary_id->GetComponent(c, 0));
+        ASSERT_GE(id, 0);
+        ASSERT_LT(id, names->GetNumberOfValues());
+        ++count[names->GetValue(id)];
+      }
+    EXPECT_EQ(count["left"], 4);
+    EXPECT_EQ(count["right"], 4);
+    EXPECT_EQ(count["top"], 12);
+    EXPECT_EQ(count["bottom"], 12);
+  }
+
+#define EXPECT_CONTAINS(text, part)                                                                            \
+  do                                                                                                             \
+    {                                                                                                            \
+      const std::string text_ = (text);                                                                          \
+      EXPECT_NE(text_.find(part), std::string::npos) << "`" << text_ << "' does not contain `" << (part) << "'"; \
+  } while (false)
+
+  namespace
+  {
+    template <typename F>
+    std::string error_of(F &&f)
+    {
+      try
+        {
+          f();
+        }
+      catch (const std::exception &e)
+        {
+          return e.what();
+        }
+      return "(no error)";
+    }
+  } // namespace
+
+  TEST(FlowCore, RefusesBadInput)
+  {
+    const FvMesh mesh = rectangle(Geometry::planar, 0, 1, 0, 1, 4, 4);
+    const auto s = settings();
+    const auto inlet = BoundaryCondition::velocity_inlet([](const Vector2 &) { return Vector2(1, 0); });
+    using BCs = std::map<std::string, BoundaryCondition>;
+    const BCs good{{"left", inlet}, {"right", BoundaryCondition::pressure_outlet(0)},
+                   {"top", BoundaryCondition::wall()}, {"bottom", BoundaryCondition::wall()}};
+    EXPECT_NO_THROW(SimplecSolver(mesh, {1, 1}, good, s));
+
+    BCs no_outlet = good;
+    no_outlet["right"] = BoundaryCondition::wall();
+    EXPECT_CONTAINS(error_of([&] { SimplecSolver(mesh, {1, 1}, no_outlet, s); }), "no outlet");
+    BCs no_inlet = good;
+    no_inlet["left"] = BoundaryCondition::wall();
+    EXPECT_CONTAINS(error_of([&] { SimplecSolver(mesh, {1, 1}, no_inlet, s); }), "no inlet");
+    BCs unknown = good;
+    unknown["outlet"] = BoundaryCondition::pressure_outlet(0);
+    const std::string e = error_of([&] { SimplecSolver(mesh, {1, 1}, unknown, s); });
+    EXPECT_CONTAINS(e, "rectangle.geo: no boundary `outlet'");
+    EXPECT_CONTAINS(e, "bottom, left, right, top");
+    BCs missing = good;
+    missing.erase("top");
+    EXPECT_CONTAINS(error_of([&] { SimplecSolver(mesh, {1, 1}, missing, s); }),
+                    "boundary `top' has no boundary condition");
+    BCs planar_axis = good;
+    planar_axis["bottom"] = BoundaryCondition::axis();
+    EXPECT_CONTAINS(error_of([&] { SimplecSolver(mesh, {1, 1}, planar_axis, s); }), "axis in a planar");
+    EXPECT_CONTAINS(error_of([&] { SimplecSolver(mesh, {1, 0}, good, s); }), "viscosity 0 Pa*s must be > 0");
+    EXPECT_CONTAINS(error_of([&] { SimplecSolver(mesh, {-1, 1}, good, s); }), "density -1 kg/m^3 must be > 0");
+    for (auto fluid : {FluidProperties{1, 0}, FluidProperties{0, 1}})
+      EXPECT_THROW(SimplecSolver(mesh, fluid, good, s), InputError);
+
+    // mesh files: absent, not gmsh
+    const std::string dir = test::temporary_directory();
+    EXPECT_CONTAINS(error_of([&] { read_gmsh_file(dir + "/absent.msh"); }), dir + "/absent.msh");
+    {
+      std::ofstream(dir + "/not_gmsh.msh") << "this is not a mesh\n";
+    }
+    const std::string not_gmsh = error_of([&] { read_gmsh_file(dir + "/not_gmsh.msh"); });
+    EXPECT_CONTAINS(not_gmsh, dir + "/not_gmsh.msh");
+    EXPECT_THROW(read_gmsh_file(dir + "/not_gmsh.msh"), InputError);
+    {
+      std::ofstream(dir + "/not_gmsh.geo") << "this is not a geometry\n";
+    }
+    EXPECT_CONTAINS(error_of([&] { read_gmsh_file(dir + "/not_gmsh.geo"); }), dir + "/not_gmsh.geo: gmsh cannot read it");
+    // and gmsh reads the next file: the failed parse leaves nothing behind
+    EXPECT_EQ(rectangle(Geometry::planar, 0, 1, 0, 1, 3, 3).n_cells(), 9u);
+  }
+
+  // An iteration limit that is too small fails the run, naming the residuals; it does not hand back
+  // the unconverged fields.
+  TEST(FlowCore, UnconvergedRunFails)
+  {
+    const FvMesh mesh = rectangle(Geometry::planar, 0, 4, 0, 1, 20, 5);
+    auto s = settings();
+    s.max_iterations = 5;
+    std::map<std::string, BoundaryCondition> bc{
+      {"left", BoundaryCondition::velocity_inlet([](const Vector2 &) { return Vector2(1, 0); })},
+      {"right", BoundaryCondition::pressure_outlet(0)},
+      {"top", BoundaryCondition::wall()},
+      {"bottom", BoundaryCondition::wall()}};
+    SimplecSolver solver(mesh, {1, 0.05}, bc, s);
+    solver.failure_output = test::temporary_directory() + "/unconverged.vtu";
+    const std::string e = error_of([&] { solver.solve(); });
+    EXPECT_CONTAINS(e, "not converged in 5 iterations");
+    EXPECT_CONTAINS(e, "tolerance 1e-08");
+    EXPECT_TRUE(std::ifstream(solver.failure_output).good());
+  }
+} // namespace servodrift::flow
+
+namespace servodrift::flow
+{
+  // Without under-relaxation a cavity at Re 1e6 on a coarse mesh blows up: the run stops at the
+  // iteration where a residual is no longer finite or has grown beyond 1e8, naming it, and writes
+  // the fields it had for inspection.
+  TEST(FlowCore, DivergenceStopsTheRun)
+  {
+    const FvMesh mesh = rectangle(Geometry::planar, 0, 1, 0, 1, 16, 16);
+    auto s = settings();
+    s.velocity_relaxation = 1;
+    s.convection = FlowSolverParameters::Convection::bounded_linear_upwind;
+    std::map<std::string, BoundaryCondition> bc{{"top", BoundaryCondition::wall(Vector2(1, 0))},
+                                                {"left", BoundaryCondition::wall()},
+                                                {"right", BoundaryCondition::wall()},
+                                                {"bottom", BoundaryCondition::wall()}};
+    SimplecSolver solver(mesh, {1, 1e-6}, bc, s);
+    solver.failure_output = test::temporary_directory() + "/diverged.vtu";
+    const std::string e = error_of([&] { solver.solve(); });
+    std::printf("%s\n", e.c_str());
+    EXPECT_CONTAINS(e, "diverged at iteration");
+    EXPECT_TRUE(std::ifstream(solver.failure_output).good());
+  }
+} // namespace servodrift::flow
