@@ -3,7 +3,7 @@
 // residuals of 1e-8 on about 5, 20 and 80 thousand cells, with the three momentum solvers on the
 // 20-thousand-cell mesh. Prints cells, SIMPLEC iterations, wall time, time per iteration and the
 // pressure-drop error. Not a test.
-//   OMP_THREAD_LIMIT=1 build/bench/bench_flow [repetitions] [largest cells in thousands: 5|20|80]
+//   OMP_THREAD_LIMIT=1 build/bench/bench_flow [repetitions] [largest cells in thousands: 5|20|80] [compare: 1|0]
 #include "common/gmsh_mesh.h"
 #include "common/output_files.h"
 #include "common/valve_description.h"
@@ -47,6 +47,7 @@ int main(int argc, char **argv)
 {
   const int repetitions = argc > 1 ? std::atoi(argv[1]) : 3;
   const int largest = argc > 2 ? std::atoi(argv[2]) : 80;
+  const bool compare = argc > 3 ? std::atoi(argv[3]) != 0 : true;
   const ValveDescription valve = load_valve_description("", {"Output/Progress=none"});
   const GmshTemplate geo{"rectangle.geo", read_file(std::string(SERVODRIFT_SOURCE_DIR) + "/tests/verification/meshes/rectangle.geo"), 1.0};
   auto mesh_of = [&](int nx, int ny) {
@@ -78,6 +79,8 @@ int main(int argc, char **argv)
       const FvMesh mesh = mesh_of(size[0], size[1]);
       print("default (BiCGSTAB-Jacobi momentum)", best_of(mesh, valve.flow_solver));
     }
+  if (!compare)
+    return 0;
   const FvMesh mesh = mesh_of(320, 64);
   for (auto [solver, name] : {std::make_pair(FlowSolverParameters::MomentumSolver::bicgstab_ilu, "BiCGSTAB-ILUT momentum"),
                               std::make_pair(FlowSolverParameters::MomentumSolver::direct, "UMFPACK momentum")})
