@@ -113,6 +113,8 @@ namespace servodrift::flow
 
     std::vector<double> u, v, p, flux;
     std::vector<double> u_b, v_b, p_b; ///< boundary face values (interior entries unused)
+    /// Pressure boundaries: the normal velocity of an inflow from the last fluxes (< 0; 0 for an outflow)
+    std::vector<double> inflow_speed;
     std::vector<Vector2> grad_p;
     std::vector<double> a_u;          ///< relaxed diagonal of the u equation
     std::vector<double> D, D_simplec; ///< V/a_P and V/(a_P - sum a_nb)
@@ -199,7 +201,7 @@ namespace servodrift::flow
 
     const std::size_t n = mesh.n_cells(), nf = mesh.n_faces();
     u.assign(n, 0), v.assign(n, 0), p.assign(n, 0), flux.assign(nf, 0);
-    u_b.assign(nf, 0), v_b.assign(nf, 0), p_b.assign(nf, 0);
+    u_b.assign(nf, 0), v_b.assign(nf, 0), p_b.assign(nf, 0), inflow_speed.assign(nf, 0);
     grad_p.assign(n, Vector2::Zero());
     a_u.assign(n, 1), D.assign(n, 0), D_simplec.assign(n, 0);
     face_kind.assign(nf, Kind::wall);
@@ -275,14 +277,23 @@ namespace servodrift::flow
             case Kind::velocity_inlet: ub = prescribed_velocity[f]; break;
             case Kind::symmetry: ub = uP - uP.dot(n) * n; break;
             case Kind::axis: ub = Vector2(u[P], 0.0); break;
-            default: ub = uP; // pressure boundaries: zero gradient
+            default: // pressure boundaries
+              // outflow: zero gradient; inflow: normal to the face with the speed of its flux (a
+              // zero gradient at an inflow would leave the cell's momentum equation without its
+              // convective diagonal and the iteration unstable)
+              ub = inflow_speed[f] < 0 ? Vector2(inflow_speed[f] * n) : uP;
           }
         u_b[f] = ub.x(), v_b[f] = ub.y();
         const BoundaryCondition &bc = patch_condition[mesh.face_patch[f]];
-        if (face_kind[f] == Kind::pressure_outlet)
-          p_b[f] = bc.pressure;
-        else if (face_kind[f] == Kind::total_pressure_inlet)
-          p_b[f] = bc.pressure - 0.5 * fluid.density * uP.squaredNorm(); // p = p_0 - rho |u|^2/2
+        if (is_pressure_boundary(face_kind[f]))
+          {
+            // Inflow comes from a reservoir at rest at the given pressure, through a total-pressure
+            // inlet or back in through an outlet (entrainment): p = p_0 - rho u_n^2/2 with the
+            // face's normal velocity from its flux, the form the pressure correction linearises.
+            // Outflow leaves at the given static pressure.
+            const double u_n = inflow_speed[f];
+            p_b[f] = bc.pressure - 0.5 * fluid.density * u_n * u_n;
+          }
         else // extrapolated with the last gradient (second order at walls: the wall pressure force)
           p_b[f] = p[P] + grad_p[P].dot(mesh.face_center[f] - mesh.cell_center[P]);
       }
@@ -384,7 +395,16 @@ namespace servodrift::flow
                     b[P] -= a * nc * no * other[P];
                     break;
                   }
-                default: break; // axis (no area), pressure boundaries (zero gradient)
+                case Kind::pressure_outlet:
+                case Kind::total_pressure_inlet:
+                  {
+                    // inflow carries the boundary value in (upwind); outflow leaves with the cell's
+                    const double a = std::max(-F, 0.0);
+                    diag[P] += a;
+                    b[P] += a * phi_b[f];
+                    break;
+                  }
+                default: break; // axis (no area)
               }
           }
       }
@@ -532,6 +552,14 @@ namespace servodrift::flow
         else if (is_pressure_boundary(face_kind[f]))
           {
             coefficient[f] = rho * D_simplec[P] * mesh.face_area[f] / distance_to_face(f); // p' = 0 there
+            if (F[f] < 0)
+              {
+                // p_b = p_0 - F^2/(2 rho A^2) moves with the inflow: p_b' = -|F| F'/(rho A^2), so
+                // F' = c (p_P' - p_b') gives F' = c p_P'/(1 + c |F|/(rho A^2)). Without it the
+                // boundary pressure lags the flux and the iteration oscillates and diverges.
+                const double A = mesh.face_area[f];
+                coefficient[f] /= 1 + coefficient[f] * std::abs(F[f]) / (rho * A * A);
+              }
             diag[P] += coefficient[f];
           }
       }
@@ -621,6 +649,9 @@ namespace servodrift::flow
                                                    circulation / std::sqrt(double(n)); // closed domain
     const double imbalance = pressure_correction(F);
     flux = F;
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      if (mesh.neighbour[f] < 0 && is_pressure_boundary(face_kind[f]))
+        inflow_speed[f] = std::min(flux[f], 0.0) / (fluid.density * mesh.face_area[f]);
     Residuals r;
     const double scale = std::max(scale_u, 1e-300);
     r.u = ru / scale;
@@ -694,6 +725,30 @@ namespace servodrift::flow
     return report;
   }
 
+  void SimplecSolver::set_boundary_pressure(const std::string &patch, double pressure)
+  {
+    const int k = impl->mesh.patch_index(patch);
+    if (k < 0 || !is_pressure_boundary(impl->patch_condition[k].kind))
+      throw std::invalid_argument("flow: " + impl->mesh.source + ": `" + patch + "' is not a pressure boundary");
+    impl->patch_condition[k].pressure = pressure;
+    impl->update_boundary_values();
+  }
+
+  void SimplecSolver::initialize_from(const SimplecSolver &other)
+  {
+    auto &d = *impl;
+    const auto &o = *other.impl;
+    if (o.mesh.n_cells() != d.mesh.n_cells() || o.mesh.n_faces() != d.mesh.n_faces())
+      throw std::invalid_argument("flow: " + d.mesh.source + ": cannot start from the fields of a different mesh");
+    d.u = o.u, d.v = o.v, d.p = o.p;
+    // the face fluxes scale with the face areas of this mesh (same topology, other dimensions)
+    for (std::size_t f = 0; f < d.mesh.n_faces(); ++f)
+      if (d.face_kind[f] != Kind::velocity_inlet || d.mesh.neighbour[f] >= 0)
+        d.flux[f] = o.flux[f] * d.mesh.face_area[f] / o.mesh.face_area[f] * d.fluid.density / o.fluid.density;
+    d.grad_p = d.mesh.gradient(d.p, o.p_b);
+    d.update_boundary_values();
+  }
+
   const std::vector<double> &SimplecSolver::velocity_x() const { return impl->u; }
   const std::vector<double> &SimplecSolver::velocity_y() const { return impl->v; }
   const std::vector<double> &SimplecSolver::pressure() const { return impl->p; }
@@ -735,6 +790,28 @@ namespace servodrift::flow
         area += impl->mesh.face_area[f];
       }
     return area > 0 ? sum / area : 0.0;
+  }
+
+  double SimplecSolver::mean_total_pressure(const std::string &patch) const
+  {
+    double sum = 0, flow = 0;
+    for (unsigned int f : faces_of(impl->mesh, patch))
+      {
+        const double weight = std::abs(impl->flux[f]);
+        sum += weight * (impl->p_b[f] + 0.5 * impl->fluid.density *
+                                          (impl->u_b[f] * impl->u_b[f] + impl->v_b[f] * impl->v_b[f]));
+        flow += weight;
+      }
+    return flow > 0 ? sum / flow : mean_pressure(patch);
+  }
+
+  double SimplecSolver::minimum_pressure() const
+  {
+    double lowest = *std::min_element(impl->p.begin(), impl->p.end());
+    for (std::size_t f = 0; f < impl->mesh.n_faces(); ++f)
+      if (impl->mesh.neighbour[f] < 0)
+        lowest = std::min(lowest, impl->p_b[f]);
+    return lowest;
   }
 
   double SimplecSolver::pressure_force(const std::string &patch, const Vector2 &direction, double p_reference) const

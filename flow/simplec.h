@@ -32,8 +32,9 @@ namespace servodrift::flow
     {
       wall,                 ///< no slip: the wall's velocity (default at rest)
       velocity_inlet,       ///< a given velocity profile
-      total_pressure_inlet, ///< p_0 = p + rho |u|^2/2 given, velocity from the inside
-      pressure_outlet,      ///< static pressure given, velocity from the inside
+      total_pressure_inlet, ///< p_0 = p + rho u_n^2/2 given; the inflow normal to the face
+      pressure_outlet,      ///< static pressure given for outflow (velocity from the inside); an
+                            ///< inflow (backflow, entrainment) enters from rest at that pressure
       axis,                 ///< r = 0 of an axisymmetric domain
       symmetry,             ///< symmetry plane: no normal velocity, no shear
     } kind = Kind::wall;
@@ -70,6 +71,13 @@ namespace servodrift::flow
                   const std::map<std::string, BoundaryCondition> &boundaries, const FlowSolverParameters &settings);
     ~SimplecSolver();
 
+    /// Continuation: a new total or static pressure on a pressure boundary patch; the next solve
+    /// starts from the current fields.
+    void set_boundary_pressure(const std::string &patch, double pressure);
+    /// Continuation: starts from the fields of a solver on a mesh of the same topology (the same
+    /// template with other dimensions). Throws std::invalid_argument if the cell counts differ.
+    void initialize_from(const SimplecSolver &other);
+
     /// Iterates until the scaled residuals fall below the tolerance. Throws std::runtime_error if
     /// the iteration limit is reached, or at a NaN or divergence (naming the iteration; with
     /// `failure_output' set, the fields are written there as VTU first).
@@ -89,6 +97,10 @@ namespace servodrift::flow
     double flow_rate(const std::string &patch) const;
     /// Area-weighted mean pressure on a patch [Pa].
     double mean_pressure(const std::string &patch) const;
+    /// Flux-weighted mean total pressure p + rho |u|^2/2 through a patch [Pa].
+    double mean_total_pressure(const std::string &patch) const;
+    /// The lowest cell or boundary-face pressure [Pa].
+    double minimum_pressure() const;
     /// Integral of (p - p_reference) n . e over a patch, n out of the fluid [N]: the pressure force
     /// of the fluid on the wall along e (a full revolution if axisymmetric).
     double pressure_force(const std::string &patch, const Vector2 &direction, double p_reference = 0) const;

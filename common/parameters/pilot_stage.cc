@@ -32,6 +32,19 @@ namespace servodrift
                       "Inertial discharge coefficient C_d,inf of the nozzle curtain (E22). [1]");
     prm.declare_entry("Control cavity volume", "1.0e-7", Patterns::Double(0, 1),
                       "Volume V_0 of each control cavity with its passages (E33; dynamics). [m^3]");
+    prm.declare_entry("Field mesh resolution", "1", Patterns::Double(0.25, 8),
+                      "Field level: multiplies every cell count of meshes/fixed_orifice.geo (30 cells "
+                      "across the bore radius at 1) and meshes/nozzle_flapper.geo (20 across the gap "
+                      "at 1). [1]");
+    prm.declare_entry("Field plenum size", "6", Patterns::Double(2, 100),
+                      "Field level: radius and length of the fixed orifice's upstream plenum, in bore "
+                      "radii D_0/2. [1]");
+    prm.declare_entry("Field chamber length", "20", Patterns::Double(4, 1000),
+                      "Field level: length of the fixed orifice's downstream chamber (radius 8 bore "
+                      "radii), in bore radii D_0/2; the outlet is at its end. [1]");
+    prm.declare_entry("Field outlet radius", "4", Patterns::Double(1.5, 100),
+                      "Field level: radius of the nozzle-flapper case's radial outlet (return "
+                      "pressure), in land radii D_land/2. [1]");
     prm.declare_entry("Fixed orifice law", "lichtarowicz", Patterns::Selection("lichtarowicz|paper-fit"),
                       "Reduced-order fixed-orifice discharge coefficient: lichtarowicz (E21, RV-1) or "
                       "paper-fit (the paper's cubic E26 in Re_0, clamped to its window Re_0 in "
@@ -60,6 +73,10 @@ namespace servodrift
     nozzle_length = prm.get_double("Nozzle length");
     nozzle_discharge_coefficient = prm.get_double("Nozzle discharge coefficient");
     control_cavity_volume = prm.get_double("Control cavity volume");
+    field_resolution = prm.get_double("Field mesh resolution");
+    field_plenum_size = prm.get_double("Field plenum size");
+    field_chamber_length = prm.get_double("Field chamber length");
+    field_outlet_radius = prm.get_double("Field outlet radius");
     fixed_orifice_law =
       prm.get("Fixed orifice law") == "paper-fit" ? OrificeLaw::paper_fit : OrificeLaw::lichtarowicz;
     nozzle_law = prm.get("Nozzle law") == "paper-fit" ? NozzleLaw::paper_fit : NozzleLaw::curtain;

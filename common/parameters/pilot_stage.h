@@ -23,6 +23,12 @@ namespace servodrift
     enum class OrificeLaw { lichtarowicz, paper_fit };       ///< E21 or E26 (D2)
     enum class NozzleLaw { curtain, paper_fit };             ///< E22 or E27 T-part (D2)
     enum class FlapperForceLaw { momentum, paper_table };    ///< E23 or section 3 item 10 (D2)
+    // field level (meshes/fixed_orifice.geo, meshes/nozzle_flapper.geo)
+    double field_resolution;        ///< multiplies every cell count [1]
+    double field_plenum_size;       ///< orifice plenum radius and length / bore radius [1]
+    double field_chamber_length;    ///< orifice downstream chamber length / bore radius [1]
+    double field_outlet_radius;     ///< nozzle-flapper outlet radius / land radius [1]
+
     OrificeLaw fixed_orifice_law;
     NozzleLaw nozzle_law;
     FlapperForceLaw flapper_force_law;
