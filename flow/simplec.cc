@@ -137,6 +137,12 @@ namespace servodrift::flow
     std::vector<double> diag, off_sum, psi; // work arrays of the momentum assembly
     std::vector<Vector2> grad;
 
+    // turbulence: k, epsilon~ (Launder-Sharma), the turbulent viscosity mu_t per cell, and the
+    // effective viscosity mu + mu_t per face (the laminar mu at walls)
+    bool turbulent = false;
+    std::vector<double> k, epsilon, mu_t, k_b, epsilon_b, mu_face;
+    SparseMatrix matrix_k, matrix_epsilon;
+
     Implementation(const FvMesh &mesh, const FluidProperties &fluid,
                    const std::map<std::string, BoundaryCondition> &boundaries, const FlowSolverParameters &settings);
 
@@ -148,9 +154,25 @@ namespace servodrift::flow
     }
     std::vector<double> limiter(const std::vector<double> &phi, const std::vector<double> &phi_b,
                                 const std::vector<Vector2> &grad) const;
+    /// Convection (upwind, plus the bounded linear upwind correction) and diffusion (central, plus the
+    /// non-orthogonal correction) of phi with the face diffusivities gamma: the off-diagonal values of
+    /// A in place, the diagonal in `diag' (not yet in A), sum a_nb in `off_sum', the sources in b.
+    /// Boundary faces: walls and velocity inlets hold phi_b (diffusion and inflow); at a pressure
+    /// boundary an inflow carries phi_b in; axis and symmetry add nothing here.
+    void assemble_transport(SparseMatrix &A, Eigen::VectorXd &b, const std::vector<double> &phi,
+                            const std::vector<double> &phi_b, const std::vector<double> &gamma);
+    /// Writes diag/alpha into A and the relaxation source into b; returns sum |b - A phi| before
+    /// relaxation and in `scale' sum diag |scale_field|.
+    double relax(SparseMatrix &A, Eigen::VectorXd &b, const std::vector<double> &phi, double alpha,
+                 const std::vector<double> &scale_field, double &scale);
     double assemble_momentum(SparseMatrix &A, Eigen::VectorXd &b, const std::vector<double> &phi,
                              const std::vector<double> &phi_b, const std::vector<double> &other, int component,
                              double &scale);
+    void solve_iteratively(SparseMatrix &A, Eigen::VectorXd &b, std::vector<double> &phi, const char *equation);
+    // Launder-Sharma low-Reynolds k-epsilon (issue 5): turbulent viscosity, its face values, and one
+    // step of the k and epsilon~ equations
+    void update_face_viscosity();
+    void turbulence_step(Residuals &r);
     void solve_momentum(SparseMatrix &A, Eigen::VectorXd &b, std::vector<double> &phi,
                         Eigen::UmfPackLU<SparseMatrix> &direct, bool first);
     std::vector<double> rhie_chow_fluxes() const;
@@ -221,6 +243,10 @@ namespace servodrift::flow
       if (mesh.neighbour[f] < 0 && face_kind[f] == Kind::velocity_inlet)
         reference_flux += std::max(0.0, -flux[f]);
     setup_pattern();
+    turbulent = settings.turbulence == FlowSolverParameters::Turbulence::k_epsilon;
+    mu_t.assign(n, 0.0);
+    k.assign(n, 0.0), epsilon.assign(n, 0.0), k_b.assign(nf, 0.0), epsilon_b.assign(nf, 0.0);
+    update_face_viscosity();
     update_boundary_values();
   }
 
@@ -254,7 +280,7 @@ namespace servodrift::flow
           owner_row_index[f] = position(mesh.owner[f], mesh.neighbour[f]);
           neighbour_row_index[f] = position(mesh.neighbour[f], mesh.owner[f]);
         }
-    matrix_u = A, matrix_v = A, matrix_p = A;
+    matrix_u = A, matrix_v = A, matrix_p = A, matrix_k = A, matrix_epsilon = A;
     pressure_factor.analyzePattern(matrix_p); // once per mesh
     if (pressure_factor.info() != Eigen::Success)
       throw std::runtime_error("flow: CHOLMOD symbolic analysis of the pressure equation failed");
@@ -325,16 +351,12 @@ namespace servodrift::flow
     return psi;
   }
 
-  /// Assembles the momentum equation of one component (0: x, 1: y) in place; returns the sum of
-  /// |residual| of the current field (before relaxation), and in `scale' its normalisation.
-  double SimplecSolver::Implementation::assemble_momentum(SparseMatrix &A, Eigen::VectorXd &b,
-                                                          const std::vector<double> &phi,
-                                                          const std::vector<double> &phi_b,
-                                                          const std::vector<double> &other, int component,
-                                                          double &scale)
+  void SimplecSolver::Implementation::assemble_transport(SparseMatrix &A, Eigen::VectorXd &b,
+                                                         const std::vector<double> &phi,
+                                                         const std::vector<double> &phi_b,
+                                                         const std::vector<double> &gamma)
   {
     const std::size_t n = mesh.n_cells();
-    const double mu = fluid.viscosity;
     double *value = A.valuePtr();
     std::fill(value, value + A.nonZeros(), 0.0);
     b.setZero(n);
@@ -354,8 +376,8 @@ namespace servodrift::flow
           {
             const unsigned int N = mesh.neighbour[f];
             const Vector2 d = mesh.cell_center[N] - mesh.cell_center[P];
-            // diffusion, over-relaxed split S = E + T with E along d: implicit mu |E|/|d|, explicit T part
-            const double Df = mu * area / nrm.dot(d);
+            // diffusion, over-relaxed split S = E + T with E along d: implicit gamma |E|/|d|, explicit T part
+            const double Df = gamma[f] * area / nrm.dot(d);
             const double aPN = Df + std::max(-F, 0.0), aNP = Df + std::max(F, 0.0); // upwind convection
             value[owner_row_index[f]] = -aPN;
             value[neighbour_row_index[f]] = -aNP;
@@ -364,7 +386,7 @@ namespace servodrift::flow
             const double w = mesh.face_weight(f);
             const Vector2 grad_f = w * grad[P] + (1 - w) * grad[N];
             const Vector2 T = area * nrm - area / nrm.dot(d) * d;
-            const double nonorthogonal = mu * grad_f.dot(T);
+            const double nonorthogonal = gamma[f] * grad_f.dot(T);
             b[P] += nonorthogonal, b[N] -= nonorthogonal;
             if (second_order)
               {
@@ -376,63 +398,106 @@ namespace servodrift::flow
           }
         else
           {
-            const double dn = distance_to_face(f);
+            double a = 0;
             switch (face_kind[f])
               {
                 case Kind::wall:
                 case Kind::velocity_inlet:
-                  {
-                    const double a = mu * area / dn + std::max(-F, 0.0);
-                    diag[P] += a;
-                    b[P] += a * phi_b[f];
-                    break;
-                  }
-                case Kind::symmetry:
-                  {
-                    // no shear: only the normal component diffuses towards zero (couples u and v)
-                    const double a = mu * area / dn, nc = nrm[component], no = nrm[1 - component];
-                    diag[P] += a * nc * nc;
-                    b[P] -= a * nc * no * other[P];
-                    break;
-                  }
+                  a = gamma[f] * area / distance_to_face(f) + std::max(-F, 0.0);
+                  break;
                 case Kind::pressure_outlet:
                 case Kind::total_pressure_inlet:
-                  {
-                    // inflow carries the boundary value in (upwind); outflow leaves with the cell's
-                    const double a = std::max(-F, 0.0);
-                    diag[P] += a;
-                    b[P] += a * phi_b[f];
-                    break;
-                  }
-                default: break; // axis (no area)
+                  a = std::max(-F, 0.0); // inflow carries the boundary value in; outflow leaves with the cell's
+                  break;
+                default: break; // axis (no area), symmetry (no flux; the momentum adds its own)
               }
+            diag[P] += a;
+            b[P] += a * phi_b[f];
           }
+      }
+  }
+
+  double SimplecSolver::Implementation::relax(SparseMatrix &A, Eigen::VectorXd &b, const std::vector<double> &phi,
+                                             double alpha, const std::vector<double> &scale_field, double &scale)
+  {
+    const std::size_t n = mesh.n_cells();
+    double *value = A.valuePtr();
+    for (std::size_t c = 0; c < n; ++c)
+      value[diagonal_index[c]] = diag[c];
+    Eigen::Map<const Eigen::VectorXd> x(phi.data(), n);
+    const Eigen::VectorXd r = b - A * x;
+    double residual = 0;
+    scale = 0;
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        residual += std::abs(r[c]);
+        scale += diag[c] * std::abs(scale_field[c]);
+      }
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        value[diagonal_index[c]] = diag[c] / alpha;
+        b[c] += (1 - alpha) / alpha * diag[c] * phi[c];
+      }
+    return residual;
+  }
+
+  /// Assembles the momentum equation of one component (0: x, 1: y) in place; returns the sum of
+  /// |residual| of the current field (before relaxation), and in `scale' its normalisation.
+  double SimplecSolver::Implementation::assemble_momentum(SparseMatrix &A, Eigen::VectorXd &b,
+                                                          const std::vector<double> &phi,
+                                                          const std::vector<double> &phi_b,
+                                                          const std::vector<double> &other, int component,
+                                                          double &scale)
+  {
+    const std::size_t n = mesh.n_cells();
+    const double mu = fluid.viscosity;
+    assemble_transport(A, b, phi, phi_b, mu_face);
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      if (mesh.neighbour[f] < 0 && face_kind[f] == Kind::symmetry)
+        {
+          // no shear: only the normal component diffuses towards zero (couples u and v)
+          const unsigned int P = mesh.owner[f];
+          const Vector2 &nrm = mesh.face_normal[f];
+          const double a = mu_face[f] * mesh.face_area[f] / distance_to_face(f), nc = nrm[component],
+                       no = nrm[1 - component];
+          diag[P] += a * nc * nc;
+          b[P] -= a * nc * no * other[P];
+        }
+    if (turbulent)
+      {
+        // the transpose part of the turbulent stress, div(mu_t (grad u)^T), explicitly: it vanishes
+        // for a constant viscosity in planar flow, not for mu_t
+        const std::vector<Vector2> grad_u = mesh.gradient(u, u_b), grad_v = mesh.gradient(v, v_b);
+        for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+          if (mesh.neighbour[f] >= 0)
+            {
+              const unsigned int P = mesh.owner[f], N = mesh.neighbour[f];
+              const double w = mesh.face_weight(f);
+              const double mut = w * mu_t[P] + (1 - w) * mu_t[N];
+              const Vector2 S = mesh.face_area[f] * mesh.face_normal[f];
+              const double gu = w * grad_u[P][component] + (1 - w) * grad_u[N][component];
+              const double gv = w * grad_v[P][component] + (1 - w) * grad_v[N][component];
+              const double t = mut * (gu * S.x() + gv * S.y());
+              b[P] += t, b[N] -= t;
+            }
       }
     for (std::size_t c = 0; c < n; ++c)
       {
         const double V = mesh.cell_volume[c];
         b[c] -= grad_p[c][component] * V; // pressure gradient
         if (component == 1 && mesh.geometry == Geometry::axisymmetric)
-          diag[c] += mu * V / (mesh.cell_center[c].y() * mesh.cell_center[c].y()); // hoop: -mu u_r/r^2
+          {
+            // hoop: -mu u_r/r^2 of the Laplacian form; -2 mu_t u_r/r^2 for the turbulent stress,
+            // whose transpose part is explicit above
+            const double r = mesh.cell_center[c].y();
+            diag[c] += (mu + 2 * (turbulent ? mu_t[c] : 0.0)) * V / (r * r);
+          }
       }
-    // residual of the current field, then under-relaxation
-    double residual = 0;
-    scale = 0;
-    Eigen::Map<const Eigen::VectorXd> x(phi.data(), n);
+    std::vector<double> speed(n);
     for (std::size_t c = 0; c < n; ++c)
-      value[diagonal_index[c]] = diag[c];
-    const Eigen::VectorXd r = b - A * x;
-    for (std::size_t c = 0; c < n; ++c)
-      {
-        residual += std::abs(r[c]);
-        scale += diag[c] * std::hypot(u[c], v[c]);
-      }
+      speed[c] = std::hypot(u[c], v[c]);
     const double alpha = settings.velocity_relaxation;
-    for (std::size_t c = 0; c < n; ++c)
-      {
-        value[diagonal_index[c]] = diag[c] / alpha;
-        b[c] += (1 - alpha) / alpha * diag[c] * phi[c];
-      }
+    const double residual = relax(A, b, phi, alpha, speed, scale);
     if (component == 0)
       for (std::size_t c = 0; c < n; ++c)
         {
@@ -462,7 +527,14 @@ namespace servodrift::flow
           throw std::runtime_error("UMFPACK momentum solve failed");
         return;
       }
+    solve_iteratively(A, b, phi, "momentum");
+  }
+
+  void SimplecSolver::Implementation::solve_iteratively(SparseMatrix &A, Eigen::VectorXd &b, std::vector<double> &phi,
+                                                        const char *equation)
+  {
     // BiCGSTAB on the correction, so that its tolerance is relative to the current residual
+    Eigen::Map<Eigen::VectorXd> x(phi.data(), mesh.n_cells());
     const Eigen::VectorXd r = b - A * x;
     if (r.norm() == 0)
       return;
@@ -472,7 +544,7 @@ namespace servodrift::flow
       solver.compute(A);
       const Eigen::VectorXd dx = solver.solve(r);
       if (solver.info() != Eigen::Success)
-        throw std::runtime_error("BiCGSTAB did not converge on the momentum equation (" +
+        throw std::runtime_error(std::string("BiCGSTAB did not converge on the ") + equation + " equation (" +
                                  std::to_string(solver.iterations()) + " iterations, relative residual " +
                                  format_number(solver.error()) + ")");
       x += dx;
@@ -653,11 +725,181 @@ namespace servodrift::flow
       if (mesh.neighbour[f] < 0 && is_pressure_boundary(face_kind[f]))
         inflow_speed[f] = std::min(flux[f], 0.0) / (fluid.density * mesh.face_area[f]);
     Residuals r;
+    if (turbulent)
+      {
+        turbulence_step(r);
+        update_face_viscosity();
+      }
     const double scale = std::max(scale_u, 1e-300);
     r.u = ru / scale;
     r.v = rv / scale;
     r.continuity = imbalance / std::max(throughput, 1e-300);
     return r;
+  }
+
+  void SimplecSolver::Implementation::update_face_viscosity()
+  {
+    mu_face.resize(mesh.n_faces());
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      {
+        const unsigned int P = mesh.owner[f];
+        double mut = 0; // at walls the turbulent viscosity vanishes (k = 0)
+        if (mesh.neighbour[f] >= 0)
+          {
+            const double w = mesh.face_weight(f);
+            mut = w * mu_t[P] + (1 - w) * mu_t[mesh.neighbour[f]];
+          }
+        else if (face_kind[f] != Kind::wall)
+          mut = mu_t[P];
+        mu_face[f] = fluid.viscosity + mut;
+      }
+  }
+
+  namespace launder_sharma
+  {
+    // the standard k-epsilon constants (the paper's model, issue 5)
+    constexpr double C_mu = 0.09, C1 = 1.44, C2 = 1.92, sigma_k = 1.0, sigma_epsilon = 1.3;
+    /// damping of mu_t near walls: f_mu = exp(-3.4/(1 + Re_t/50)^2)
+    inline double f_mu(double Re_t) { return std::exp(-3.4 / std::pow(1 + Re_t / 50, 2)); }
+    /// damping of the destruction of epsilon~: f_2 = 1 - 0.3 exp(-Re_t^2)
+    inline double f_2(double Re_t) { return 1 - 0.3 * std::exp(-Re_t * Re_t); }
+  } // namespace launder_sharma
+
+  /// One step of the Launder-Sharma equations, with the fluxes and velocities of this iteration:
+  ///   div(rho u k)  = div((mu + mu_t/sigma_k) grad k) + P - rho epsilon~ - 2 mu |grad sqrt k|^2
+  ///   div(rho u e~) = div((mu + mu_t/sigma_e) grad e~) + C1 e~/k P - C2 f_2 rho e~^2/k
+  ///                   + 2 mu nu_t |grad grad u|^2
+  ///   mu_t = rho C_mu f_mu k^2/e~,  Re_t = rho k^2/(mu e~),  P = mu_t G,
+  ///   G = 2 (u_x^2 + v_r^2 [+ (v/r)^2]) + (u_r + v_x)^2.
+  /// Walls: k = e~ = 0. An inflow brings k = 3/2 (I u_n)^2, epsilon = C_mu^(3/4) k^(3/2)/L; an
+  /// outflow, the axis and a symmetry plane take the cell's values. The sinks are implicit.
+  void SimplecSolver::Implementation::turbulence_step(Residuals &r)
+  {
+    using namespace launder_sharma;
+    const std::size_t n = mesh.n_cells(), nf = mesh.n_faces();
+    const double rho = fluid.density, mu = fluid.viscosity, alpha = settings.turbulence_relaxation;
+    const bool axisymmetric = mesh.geometry == Geometry::axisymmetric;
+
+    // boundary values
+    double k_inflow = 0, epsilon_inflow = 0;
+    for (std::size_t f = 0; f < nf; ++f)
+      {
+        if (mesh.neighbour[f] >= 0)
+          continue;
+        const unsigned int P = mesh.owner[f];
+        const BoundaryCondition &bc = patch_condition[mesh.face_patch[f]];
+        if (face_kind[f] == Kind::wall)
+          k_b[f] = epsilon_b[f] = 0;
+        else if (flux[f] < 0 && (face_kind[f] == Kind::velocity_inlet || is_pressure_boundary(face_kind[f])))
+          {
+            const double u_n = -flux[f] / (rho * mesh.face_area[f]);
+            k_b[f] = 1.5 * std::pow(bc.turbulence_intensity * u_n, 2);
+            epsilon_b[f] = std::pow(C_mu, 0.75) * std::pow(k_b[f], 1.5) / bc.turbulence_length;
+            k_inflow = std::max(k_inflow, k_b[f]), epsilon_inflow = std::max(epsilon_inflow, epsilon_b[f]);
+          }
+        else
+          k_b[f] = k[P], epsilon_b[f] = epsilon[P];
+      }
+    // a start from nothing: the inflow's turbulence everywhere (the lid's speed in a closed cavity)
+    if (*std::max_element(k.begin(), k.end()) <= 0)
+      {
+        if (k_inflow <= 0)
+          {
+            double speed = 0;
+            for (std::size_t c = 0; c < n; ++c)
+              speed = std::max(speed, std::hypot(u[c], v[c]));
+            k_inflow = 1.5 * std::pow(0.05 * speed, 2);
+            epsilon_inflow = std::pow(C_mu, 0.75) * std::pow(k_inflow, 1.5) / patch_condition[0].turbulence_length;
+          }
+        std::fill(k.begin(), k.end(), k_inflow);
+        std::fill(epsilon.begin(), epsilon.end(), std::max(epsilon_inflow, 1e-300));
+      }
+    const double k_floor = 1e-12 * std::max(k_inflow, *std::max_element(k.begin(), k.end()));
+    const double epsilon_floor = 1e-12 * std::max(epsilon_inflow, *std::max_element(epsilon.begin(), epsilon.end()));
+
+    // velocity gradients, production, the low-Reynolds terms D and E
+    const std::vector<Vector2> gu = mesh.gradient(u, u_b), gv = mesh.gradient(v, v_b);
+    std::vector<double> sqrt_k(n), sqrt_k_b(nf, 0.0);
+    for (std::size_t c = 0; c < n; ++c)
+      sqrt_k[c] = std::sqrt(std::max(k[c], 0.0));
+    for (std::size_t f = 0; f < nf; ++f)
+      if (mesh.neighbour[f] < 0)
+        sqrt_k_b[f] = std::sqrt(std::max(k_b[f], 0.0));
+    const std::vector<Vector2> g_sqrt_k = mesh.gradient(sqrt_k, sqrt_k_b);
+    // second derivatives: gradients of the four velocity-gradient components (zero-gradient at the boundary)
+    std::vector<double> second(n, 0.0);
+    {
+      std::vector<double> component(n), component_b(nf, 0.0);
+      for (int j = 0; j < 4; ++j)
+        {
+          for (std::size_t c = 0; c < n; ++c)
+            component[c] = j < 2 ? gu[c][j] : gv[c][j - 2];
+          for (std::size_t f = 0; f < nf; ++f)
+            if (mesh.neighbour[f] < 0)
+              component_b[f] = component[mesh.owner[f]];
+          const std::vector<Vector2> g = mesh.gradient(component, component_b);
+          for (std::size_t c = 0; c < n; ++c)
+            second[c] += g[c].squaredNorm();
+        }
+    }
+    std::vector<double> production(n), low_re_D(n), low_re_E(n), Re_t(n);
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        double G = 2 * (gu[c].x() * gu[c].x() + gv[c].y() * gv[c].y()) + std::pow(gu[c].y() + gv[c].x(), 2);
+        if (axisymmetric)
+          G += 2 * std::pow(v[c] / mesh.cell_center[c].y(), 2);
+        production[c] = mu_t[c] * G;
+        low_re_D[c] = 2 * mu * g_sqrt_k[c].squaredNorm();
+        low_re_E[c] = 2 * mu * (mu_t[c] / rho) * second[c];
+        Re_t[c] = rho * k[c] * k[c] / (mu * std::max(epsilon[c], epsilon_floor));
+      }
+
+    // face diffusivities mu + mu_t/sigma
+    std::vector<double> gamma(nf);
+    auto diffusivity = [&](double sigma) {
+      for (std::size_t f = 0; f < nf; ++f)
+        gamma[f] = mu + (mu_face[f] - mu) / sigma;
+    };
+    std::vector<double> scale_field;
+    double scale = 0;
+    Eigen::VectorXd b;
+
+    // k
+    diffusivity(sigma_k);
+    assemble_transport(matrix_k, b, k, k_b, gamma);
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        const double V = mesh.cell_volume[c], kc = std::max(k[c], k_floor);
+        diag[c] += (rho * std::max(epsilon[c], 0.0) + low_re_D[c]) / kc * V;
+        b[c] += production[c] * V;
+      }
+    r.k = relax(matrix_k, b, k, alpha, k, scale);
+    r.k /= std::max(scale, 1e-300);
+    solve_iteratively(matrix_k, b, k, "k");
+
+    // epsilon~
+    diffusivity(sigma_epsilon);
+    assemble_transport(matrix_epsilon, b, epsilon, epsilon_b, gamma);
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        const double V = mesh.cell_volume[c], kc = std::max(k[c], k_floor);
+        const double ratio = std::max(epsilon[c], 0.0) / kc;
+        diag[c] += C2 * f_2(Re_t[c]) * rho * ratio * V;
+        b[c] += (C1 * ratio * production[c] + low_re_E[c]) * V;
+      }
+    r.epsilon = relax(matrix_epsilon, b, epsilon, alpha, epsilon, scale);
+    r.epsilon /= std::max(scale, 1e-300);
+    solve_iteratively(matrix_epsilon, b, epsilon, "epsilon");
+
+    // bounded, then the turbulent viscosity (relaxed, at most 1e5 mu)
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        k[c] = std::max(k[c], k_floor);
+        epsilon[c] = std::max(epsilon[c], epsilon_floor);
+        const double Re = rho * k[c] * k[c] / (mu * epsilon[c]);
+        const double target = std::min(rho * C_mu * f_mu(Re) * k[c] * k[c] / epsilon[c], 1e5 * mu);
+        mu_t[c] += alpha * (target - mu_t[c]);
+      }
   }
 
   // ---- public interface ----------------------------------------------------------------------
@@ -694,6 +936,7 @@ namespace servodrift::flow
         report.residuals = r;
         d.last = r;
         const bool bad = !std::isfinite(r.u) || !std::isfinite(r.v) || !std::isfinite(r.continuity) ||
+                         !std::isfinite(r.k) || !std::isfinite(r.epsilon) ||
                          (it > 10 && (r.u > 1e8 || r.continuity > 1e8));
         if (bad)
           {
@@ -705,9 +948,15 @@ namespace servodrift::flow
                                      (failure_output.empty() ? "" : "; fields in " + failure_output));
           }
         if (d.settings.report_interval > 0 && it % d.settings.report_interval == 0)
-          std::fprintf(stderr, "  iteration %u: residuals u %.3e, v %.3e, continuity %.3e\n", it, r.u, r.v,
-                       r.continuity);
-        if (r.u < tolerance && r.v < tolerance && r.continuity < tolerance)
+          {
+            if (d.turbulent)
+              std::fprintf(stderr, "  iteration %u: residuals u %.3e, v %.3e, continuity %.3e, k %.3e, epsilon %.3e\n",
+                           it, r.u, r.v, r.continuity, r.k, r.epsilon);
+            else
+              std::fprintf(stderr, "  iteration %u: residuals u %.3e, v %.3e, continuity %.3e\n", it, r.u, r.v,
+                           r.continuity);
+          }
+        if (r.u < tolerance && r.v < tolerance && r.continuity < tolerance && r.k < tolerance && r.epsilon < tolerance)
           break;
         if (it >= d.settings.max_iterations)
           {
@@ -715,6 +964,7 @@ namespace servodrift::flow
               write_vtu(failure_output);
             throw std::runtime_error("flow: " + d.mesh.source + ": not converged in " + std::to_string(it) +
                                      " iterations (residuals u " + format_number(r.u) + ", v " + format_number(r.v) +
+                                     (d.turbulent ? ", k " + format_number(r.k) + ", epsilon " + format_number(r.epsilon) : "") +
                                      ", continuity " + format_number(r.continuity) + "; tolerance " +
                                      format_number(tolerance) + ")");
           }
@@ -741,6 +991,11 @@ namespace servodrift::flow
     if (o.mesh.n_cells() != d.mesh.n_cells() || o.mesh.n_faces() != d.mesh.n_faces())
       throw std::invalid_argument("flow: " + d.mesh.source + ": cannot start from the fields of a different mesh");
     d.u = o.u, d.v = o.v, d.p = o.p;
+    if (d.turbulent && o.turbulent)
+      {
+        d.k = o.k, d.epsilon = o.epsilon, d.mu_t = o.mu_t;
+        d.update_face_viscosity();
+      }
     // the face fluxes scale with the face areas of this mesh (same topology, other dimensions)
     for (std::size_t f = 0; f < d.mesh.n_faces(); ++f)
       if (d.face_kind[f] != Kind::velocity_inlet || d.mesh.neighbour[f] >= 0)
@@ -752,6 +1007,7 @@ namespace servodrift::flow
   const std::vector<double> &SimplecSolver::velocity_x() const { return impl->u; }
   const std::vector<double> &SimplecSolver::velocity_y() const { return impl->v; }
   const std::vector<double> &SimplecSolver::pressure() const { return impl->p; }
+  const std::vector<double> &SimplecSolver::turbulent_viscosity() const { return impl->mu_t; }
   const std::vector<double> &SimplecSolver::mass_flux() const { return impl->flux; }
   double SimplecSolver::boundary_pressure(std::size_t f) const { return impl->p_b[f]; }
   Vector2 SimplecSolver::boundary_velocity(std::size_t f) const { return Vector2(impl->u_b[f], impl->v_b[f]); }
@@ -859,6 +1115,10 @@ namespace servodrift::flow
   void SimplecSolver::write_vtu(const std::string &filename) const
   {
     const auto &d = *impl;
-    write_fv_vtu(filename, d.mesh, d.p, d.u, d.v, d.p_b, d.u_b, d.v_b);
+    if (d.turbulent)
+      write_fv_vtu(filename, d.mesh, d.p, d.u, d.v, d.p_b, d.u_b, d.v_b,
+                   {{"k", d.k}, {"epsilon", d.epsilon}, {"turbulent_viscosity", d.mu_t}});
+    else
+      write_fv_vtu(filename, d.mesh, d.p, d.u, d.v, d.p_b, d.u_b, d.v_b);
   }
 } // namespace servodrift::flow

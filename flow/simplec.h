@@ -40,6 +40,9 @@ namespace servodrift::flow
     } kind = Kind::wall;
     std::function<Vector2(const Vector2 &x)> velocity; ///< wall or inlet velocity at a boundary point [m/s]
     double pressure = 0;                                 ///< total or static pressure [Pa]
+    /// k-epsilon: what an inflow brings, k = 3/2 (I u_n)^2 and epsilon = C_mu^(3/4) k^(3/2) / L
+    double turbulence_intensity = 0.05; ///< I [1]
+    double turbulence_length = 1e-4;    ///< L [m]
 
     static BoundaryCondition wall(Vector2 moving = Vector2::Zero());
     static BoundaryCondition velocity_inlet(std::function<Vector2(const Vector2 &)> profile);
@@ -53,6 +56,7 @@ namespace servodrift::flow
   {
     double u = 0, v = 0;      ///< scaled momentum residuals
     double continuity = 0;    ///< sum of cell mass imbalances / throughput
+    double k = 0, epsilon = 0; ///< scaled residuals of the turbulence equations (0 if laminar)
   };
 
   struct SolveReport
@@ -87,6 +91,8 @@ namespace servodrift::flow
     const std::vector<double> &velocity_x() const;
     const std::vector<double> &velocity_y() const;
     const std::vector<double> &pressure() const;
+    /// Turbulent viscosity mu_t per cell [Pa*s] (zeros if laminar).
+    const std::vector<double> &turbulent_viscosity() const;
     /// Mass flux rho u.S through each face, out of the owner [kg/s, per radian if axisymmetric].
     const std::vector<double> &mass_flux() const;
     /// Face values at the boundary (index: face) of the last iteration.
@@ -111,7 +117,8 @@ namespace servodrift::flow
     double net_imbalance() const;
     double throughput() const; ///< inflow mass flux [kg/s per radian or per unit depth]
 
-    /// Pressure, velocity, cell id and, on boundary line cells, the boundary id, as VTU (VTK library).
+    /// Pressure, velocity, cell id and, on boundary line cells, the boundary id, as VTU (VTK library);
+    /// with k-epsilon also k, epsilon~ and mu_t.
     void write_vtu(const std::string &filename) const;
 
   private:

@@ -31,6 +31,14 @@ namespace servodrift
                       "SIMPLEC iterations; a run that has not converged by then fails. [1]");
     prm.declare_entry("Report interval", "0", Patterns::Integer(0, 10000000),
                       "Print the residuals every this many iterations on stderr (0: only at the end). [1]");
+    prm.declare_entry("Turbulence model", "laminar", Patterns::Selection("laminar|k-epsilon"),
+                      "laminar, or the standard k-epsilon model (C_mu 0.09, C1 1.44, C2 1.92, sigma_k 1.0, "
+                      "sigma_eps 1.3) in its Launder-Sharma low-Reynolds form, integrated to the wall (k = 0, "
+                      "epsilon~ = 0 there; the first cell needs y+ of order 1). Where a stage chooses per "
+                      "case, its own entry overrides this. [-]");
+    prm.declare_entry("Turbulence relaxation", "0.5", Patterns::Double(0.01, 1),
+                      "Under-relaxation of k, epsilon and the turbulent viscosity (the turbulent pipe "
+                      "of the tests stalls at 0.7 and converges at 0.5). [1]");
     prm.leave_subsection();
   }
 
@@ -46,6 +54,8 @@ namespace servodrift
     tolerance = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Maximum iterations");
     report_interval = prm.get_integer("Report interval");
+    turbulence = prm.get("Turbulence model") == "k-epsilon" ? Turbulence::k_epsilon : Turbulence::laminar;
+    turbulence_relaxation = prm.get_double("Turbulence relaxation");
     prm.leave_subsection();
   }
 } // namespace servodrift

@@ -17,6 +17,9 @@ namespace servodrift
     double tolerance;               ///< scaled residuals of momentum and continuity [1]
     unsigned int max_iterations;    ///< SIMPLEC iterations before the run fails
     unsigned int report_interval;   ///< print the residuals every n iterations (0: never)
+    enum class Turbulence { laminar, k_epsilon };
+    Turbulence turbulence;          ///< laminar, or Launder-Sharma low-Reynolds k-epsilon
+    double turbulence_relaxation;   ///< under-relaxation of k, epsilon and mu_t [1]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(dealii::ParameterHandler &prm);
