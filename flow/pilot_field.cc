@@ -32,11 +32,21 @@ namespace servodrift::flow
     /// sqrt(2 dp / rho): the ideal (Bernoulli) velocity of a pressure difference [m/s].
     double ideal_velocity(double dp, double rho) { return std::sqrt(2 * dp / rho); }
 
-    void check_pressure_difference(double dp, const char *what)
+    /// Sets the inlet's total pressure dp above the outlet and solves (from the last fields): the
+    /// flow rate, the lowest pressure and the iterations of a case, orifice or nozzle alike.
+    PilotFieldResult solve_case(SimplecSolver &solver, double dp, const char *what)
     {
       if (!(dp > 0) || !std::isfinite(dp))
         throw InputError(std::string("flow: ") + what + ": pressure difference " + format_number(dp) +
                          " Pa must be > 0");
+      solver.set_boundary_pressure("inlet", dp);
+      const SolveReport report = solver.solve();
+      PilotFieldResult r;
+      r.pressure_difference = dp;
+      r.flow_rate = solver.flow_rate("outlet");
+      r.minimum_pressure = solver.minimum_pressure();
+      r.iterations = report.iterations;
+      return r;
     }
   } // namespace
 
@@ -86,18 +96,11 @@ namespace servodrift::flow
 
   PilotFieldResult FixedOrificeField::solve(double dp)
   {
-    check_pressure_difference(dp, "fixed orifice");
     auto &d = *impl;
-    d.solver.set_boundary_pressure("inlet", dp);
-    const SolveReport report = d.solver.solve();
-    PilotFieldResult r;
-    r.pressure_difference = dp;
-    r.flow_rate = d.solver.flow_rate("outlet");
+    PilotFieldResult r = solve_case(d.solver, dp, "fixed orifice");
     const double area = units::pi * d.bore_radius * d.bore_radius, v_ideal = ideal_velocity(dp, d.fluid.density);
     r.discharge_coefficient = r.flow_rate / (area * v_ideal);
     r.reynolds_number = 2 * d.bore_radius * v_ideal * d.fluid.density / d.fluid.viscosity; // E17
-    r.minimum_pressure = d.solver.minimum_pressure();
-    r.iterations = report.iterations;
     return r;
   }
 
@@ -163,13 +166,8 @@ namespace servodrift::flow
 
   PilotFieldResult NozzleFlapperField::solve(double dp)
   {
-    check_pressure_difference(dp, "nozzle-flapper");
     auto &d = *impl;
-    d.solver.set_boundary_pressure("inlet", dp);
-    const SolveReport report = d.solver.solve();
-    PilotFieldResult r;
-    r.pressure_difference = dp;
-    r.flow_rate = d.solver.flow_rate("outlet");
+    PilotFieldResult r = solve_case(d.solver, dp, "nozzle-flapper");
     const double D_N = d.nozzle_diameter, h = d.gap, v_ideal = ideal_velocity(dp, d.fluid.density);
     r.discharge_coefficient = r.flow_rate / (units::pi * D_N * h * v_ideal); // curtain area (4.2)
     const double hydraulic_diameter = 2 * units::pi * D_N * h / (units::pi * D_N + h);
@@ -186,8 +184,6 @@ namespace servodrift::flow
         area += d.mesh.face_area[f];
       }
     r.bore_pressure = sum / area;
-    r.minimum_pressure = d.solver.minimum_pressure();
-    r.iterations = report.iterations;
     return r;
   }
 
