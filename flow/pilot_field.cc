@@ -104,6 +104,7 @@ namespace servodrift::flow
     return r;
   }
 
+  void FixedOrificeField::initialize_from(const FixedOrificeField &other) { impl->solver.initialize_from(other.impl->solver); }
   void FixedOrificeField::set_failure_output(const std::string &f) { impl->solver.failure_output = f; }
   void FixedOrificeField::write_vtu(const std::string &filename) const { impl->solver.write_vtu(filename); }
   std::size_t FixedOrificeField::n_cells() const { return impl->mesh.n_cells(); }

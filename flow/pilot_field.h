@@ -44,6 +44,9 @@ namespace servodrift::flow
     ~FixedOrificeField();
     /// Inlet total pressure dp above the outlet's static pressure [Pa], > 0.
     PilotFieldResult solve(double pressure_difference);
+    /// Starts the next solve from another case's fields (same mesh topology: another temperature,
+    /// or a laminar solution under a turbulent case).
+    void initialize_from(const FixedOrificeField &other);
     /// Where a case that fails writes its last fields (VTU); empty: nowhere.
     void set_failure_output(const std::string &filename);
     void write_vtu(const std::string &filename) const;

@@ -860,7 +860,6 @@ namespace servodrift::flow
       for (std::size_t f = 0; f < nf; ++f)
         gamma[f] = mu + (mu_face[f] - mu) / sigma;
     };
-    std::vector<double> scale_field;
     double scale = 0;
     Eigen::VectorXd b;
 
@@ -873,7 +872,15 @@ namespace servodrift::flow
         diag[c] += (rho * std::max(epsilon[c], 0.0) + low_re_D[c]) / kc * V;
         b[c] += production[c] * V;
       }
-    r.k = relax(matrix_k, b, k, alpha, k, scale);
+    // residuals relative to the level of k and e~ the inflow brings (or the largest), not to the
+    // local values: where turbulence decays towards laminar flow, those vanish and a relative
+    // residual would never fall
+    const double k_level = std::max(k_inflow, 1e-6 * *std::max_element(k.begin(), k.end()));
+    const double epsilon_level = std::max(epsilon_inflow, 1e-6 * *std::max_element(epsilon.begin(), epsilon.end()));
+    std::vector<double> level(n);
+    for (std::size_t c = 0; c < n; ++c)
+      level[c] = std::max(k[c], k_level);
+    r.k = relax(matrix_k, b, k, alpha, level, scale);
     r.k /= std::max(scale, 1e-300);
     solve_iteratively(matrix_k, b, k, "k");
 
@@ -887,7 +894,9 @@ namespace servodrift::flow
         diag[c] += C2 * f_2(Re_t[c]) * rho * ratio * V;
         b[c] += (C1 * ratio * production[c] + low_re_E[c]) * V;
       }
-    r.epsilon = relax(matrix_epsilon, b, epsilon, alpha, epsilon, scale);
+    for (std::size_t c = 0; c < n; ++c)
+      level[c] = std::max(epsilon[c], epsilon_level);
+    r.epsilon = relax(matrix_epsilon, b, epsilon, alpha, level, scale);
     r.epsilon /= std::max(scale, 1e-300);
     solve_iteratively(matrix_epsilon, b, epsilon, "epsilon");
 
