@@ -54,6 +54,16 @@ namespace servodrift::flow
       return s;
     }
 
+    /// A pipe of the rectangle template: `inlet' on the left, a static-pressure outlet (0) on the
+    /// right, the wall on top, the axis at the bottom.
+    std::map<std::string, BoundaryCondition> pipe_boundaries(const BoundaryCondition &inlet)
+    {
+      return {{"left", inlet},
+              {"right", BoundaryCondition::pressure_outlet(0)},
+              {"top", BoundaryCondition::wall()},
+              {"bottom", BoundaryCondition::axis()}};
+    }
+
     /// Second-order reconstruction of a cell field at x: the nearest cell's value plus its
     /// least-squares gradient (boundary values from the solver).
     struct Sampler
@@ -560,10 +570,7 @@ namespace servodrift::flow
     auto inlet = BoundaryCondition::velocity_inlet([&](const Vector2 &) { return Vector2(U, 0); });
     inlet.turbulence_intensity = 0.05;
     inlet.turbulence_length = 0.1 * R;
-    std::map<std::string, BoundaryCondition> bc{{"left", inlet},
-                                                {"right", BoundaryCondition::pressure_outlet(0)},
-                                                {"top", BoundaryCondition::wall()},
-                                                {"bottom", BoundaryCondition::axis()}};
+    const auto bc = pipe_boundaries(inlet);
     auto s = settings(1e-6);
     s.turbulence = FlowSolverParameters::Turbulence::k_epsilon;
     SimplecSolver solver(mesh, {rho, rho * U * 2 * R / Re}, bc, s);
@@ -614,10 +621,7 @@ namespace servodrift::flow
     const FvMesh mesh = rectangle(Geometry::axisymmetric, 0, L, 0, R, 128, 32);
     auto inlet = BoundaryCondition::velocity_inlet([&](const Vector2 &x) { return Vector2(2 * U * (1 - x.y() * x.y()), 0); });
     inlet.turbulence_length = 0.1 * R;
-    std::map<std::string, BoundaryCondition> bc{{"left", inlet},
-                                                {"right", BoundaryCondition::pressure_outlet(0)},
-                                                {"top", BoundaryCondition::wall()},
-                                                {"bottom", BoundaryCondition::axis()}};
+    const auto bc = pipe_boundaries(inlet);
     auto s = settings(1e-6);
     SimplecSolver laminar(mesh, {rho, mu}, bc, s);
     laminar.solve();
