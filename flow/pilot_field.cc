@@ -60,15 +60,16 @@ namespace servodrift::flow
 
   struct FixedOrificeField::Implementation
   {
-    double bore_radius, bore_length;
+    double bore_radius;
     FluidProperties fluid;
     FvMesh mesh;
     SimplecSolver solver;
 
-    static FvMesh make_mesh(const ValveDescription &valve, const PilotFieldCase &c, double &r0, double &l)
+    static FvMesh make_mesh(const ValveDescription &valve, const PilotFieldCase &c, double &r0)
     {
       const auto g = geometry_at(valve, c.temperature);
-      r0 = 0.5 * g.fixed_orifice_diameter, l = g.fixed_orifice_length;
+      r0 = 0.5 * g.fixed_orifice_diameter;
+      const double l = g.fixed_orifice_length;
       const double plenum = valve.pilot.field_plenum_size * r0;
       const std::map<std::string, double> parameters{
         {"r0", r0 / mm}, {"l", l / mm}, {"ru", plenum / mm}, {"lu", plenum / mm}, {"rd", 8 * r0 / mm},
@@ -79,7 +80,7 @@ namespace servodrift::flow
 
     Implementation(const ValveDescription &valve, const PilotFieldCase &c)
       : fluid(c.fluid)
-      , mesh(make_mesh(valve, c, bore_radius, bore_length))
+      , mesh(make_mesh(valve, c, bore_radius))
       , solver(mesh, fluid,
                {{"inlet", BoundaryCondition::total_pressure_inlet(0)},
                 {"outlet", BoundaryCondition::pressure_outlet(0)},

@@ -116,7 +116,6 @@ namespace servodrift::flow
     /// Pressure boundaries: the normal velocity of an inflow from the last fluxes (< 0; 0 for an outflow)
     std::vector<double> inflow_speed;
     std::vector<Vector2> grad_p;
-    std::vector<double> a_u;          ///< relaxed diagonal of the u equation
     std::vector<double> D, D_simplec; ///< V/a_P and V/(a_P - sum a_nb)
     bool has_pressure_boundary = false;
     double reference_flux = 0;
@@ -133,7 +132,6 @@ namespace servodrift::flow
     Eigen::UmfPackLU<SparseMatrix> direct_u, direct_v;
     Eigen::BiCGSTAB<SparseMatrix, Eigen::IncompleteLUT<double>> iterative_ilu;
     Eigen::BiCGSTAB<SparseMatrix, Eigen::DiagonalPreconditioner<double>> iterative_jacobi;
-    Residuals last;
     std::vector<double> diag, off_sum, psi; // work arrays of the momentum assembly
     std::vector<Vector2> grad;
 
@@ -225,7 +223,7 @@ namespace servodrift::flow
     u.assign(n, 0), v.assign(n, 0), p.assign(n, 0), flux.assign(nf, 0);
     u_b.assign(nf, 0), v_b.assign(nf, 0), p_b.assign(nf, 0), inflow_speed.assign(nf, 0);
     grad_p.assign(n, Vector2::Zero());
-    a_u.assign(n, 1), D.assign(n, 0), D_simplec.assign(n, 0);
+    D.assign(n, 0), D_simplec.assign(n, 0);
     face_kind.assign(nf, Kind::wall);
     prescribed_velocity.assign(nf, Vector2::Zero());
     for (std::size_t f = 0; f < nf; ++f)
@@ -501,11 +499,11 @@ namespace servodrift::flow
     if (component == 0)
       for (std::size_t c = 0; c < n; ++c)
         {
-          a_u[c] = diag[c] / alpha;
-          D[c] = mesh.cell_volume[c] / a_u[c];
+          const double a_P = diag[c] / alpha; // the relaxed diagonal of the x equation
+          D[c] = mesh.cell_volume[c] / a_P;
           // SIMPLEC: V/(a_P - sum a_nb); the boundary and relaxation terms keep it positive
-          const double denominator = a_u[c] - off_sum[c];
-          D_simplec[c] = denominator > 1e-12 * a_u[c] ? mesh.cell_volume[c] / denominator : D[c];
+          const double denominator = a_P - off_sum[c];
+          D_simplec[c] = denominator > 1e-12 * a_P ? mesh.cell_volume[c] / denominator : D[c];
         }
     return residual;
   }
@@ -943,7 +941,6 @@ namespace servodrift::flow
           }
         report.iterations = it;
         report.residuals = r;
-        d.last = r;
         const bool bad = !std::isfinite(r.u) || !std::isfinite(r.v) || !std::isfinite(r.continuity) ||
                          !std::isfinite(r.k) || !std::isfinite(r.epsilon) ||
                          (it > 10 && (r.u > 1e8 || r.continuity > 1e8));
