@@ -39,6 +39,10 @@ namespace servodrift::flow
       if (!(dp > 0) || !std::isfinite(dp))
         throw InputError(std::string("flow: ") + what + ": pressure difference " + format_number(dp) +
                          " Pa must be > 0");
+      // continuation from the last fields, scaled to the new pressure level first
+      const double previous = solver.boundary_pressure("inlet");
+      if (previous > 0 && previous != dp)
+        solver.scale_pressure_level(dp / previous);
       solver.set_boundary_pressure("inlet", dp);
       const SolveReport report = solver.solve();
       PilotFieldResult r;

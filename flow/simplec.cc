@@ -956,8 +956,10 @@ namespace servodrift::flow
         if (d.settings.report_interval > 0 && it % d.settings.report_interval == 0)
           {
             if (d.turbulent)
-              std::fprintf(stderr, "  iteration %u: residuals u %.3e, v %.3e, continuity %.3e, k %.3e, epsilon %.3e\n",
-                           it, r.u, r.v, r.continuity, r.k, r.epsilon);
+              std::fprintf(stderr,
+                           "  iteration %u: residuals u %.3e, v %.3e, continuity %.3e, k %.3e, epsilon %.3e; max mu_t/mu %.3g\n",
+                           it, r.u, r.v, r.continuity, r.k, r.epsilon,
+                           *std::max_element(d.mu_t.begin(), d.mu_t.end()) / d.fluid.viscosity);
             else
               std::fprintf(stderr, "  iteration %u: residuals u %.3e, v %.3e, continuity %.3e\n", it, r.u, r.v,
                            r.continuity);
@@ -990,6 +992,37 @@ namespace servodrift::flow
     impl->update_boundary_values();
   }
 
+  double SimplecSolver::boundary_pressure(const std::string &patch) const
+  {
+    const int k = impl->mesh.patch_index(patch);
+    if (k < 0 || !is_pressure_boundary(impl->patch_condition[k].kind))
+      throw std::invalid_argument("flow: " + impl->mesh.source + ": `" + patch + "' is not a pressure boundary");
+    return impl->patch_condition[k].pressure;
+  }
+
+  void SimplecSolver::scale_pressure_level(double s)
+  {
+    if (!(s > 0) || !std::isfinite(s))
+      throw std::invalid_argument("flow: pressure scaling " + format_number(s) + " must be > 0");
+    auto &d = *impl;
+    const double root = std::sqrt(s);
+    auto scale = [](std::vector<double> &x, double factor) {
+      for (double &value : x)
+        value *= factor;
+    };
+    scale(d.p, s), scale(d.p_b, s);
+    for (auto &g : d.grad_p)
+      g *= s;
+    for (auto *field : {&d.u, &d.v, &d.u_b, &d.v_b, &d.flux, &d.inflow_speed, &d.mu_t})
+      scale(*field, root);
+    scale(d.k, s), scale(d.k_b, s);
+    scale(d.epsilon, s * root), scale(d.epsilon_b, s * root);
+    for (auto &bc : d.patch_condition)
+      bc.pressure *= s;
+    d.update_face_viscosity();
+    d.update_boundary_values();
+  }
+
   void SimplecSolver::initialize_from(const SimplecSolver &other)
   {
     auto &d = *impl;
@@ -997,6 +1030,10 @@ namespace servodrift::flow
     if (o.mesh.n_cells() != d.mesh.n_cells() || o.mesh.n_faces() != d.mesh.n_faces())
       throw std::invalid_argument("flow: " + d.mesh.source + ": cannot start from the fields of a different mesh");
     d.u = o.u, d.v = o.v, d.p = o.p;
+    for (std::size_t k = 0; k < d.patch_condition.size(); ++k)
+      if (is_pressure_boundary(d.patch_condition[k].kind) && k < o.patch_condition.size() &&
+          o.mesh.patch_names[k] == d.mesh.patch_names[k])
+        d.patch_condition[k].pressure = o.patch_condition[k].pressure;
     if (d.turbulent && o.turbulent)
       {
         d.k = o.k, d.epsilon = o.epsilon, d.mu_t = o.mu_t;

@@ -78,6 +78,14 @@ namespace servodrift::flow
     /// Continuation: a new total or static pressure on a pressure boundary patch; the next solve
     /// starts from the current fields.
     void set_boundary_pressure(const std::string &patch, double pressure);
+    /// The boundary pressure of a pressure patch [Pa].
+    double boundary_pressure(const std::string &patch) const;
+    /// Continuation between pressure levels: scales the fields as a flow whose Reynolds number
+    /// does not matter, by the ratio s of every pressure (boundary pressures included; the
+    /// reference 0 stays 0): p by s, velocities and fluxes by sqrt(s), k by s, epsilon by s^(3/2),
+    /// mu_t by sqrt(s). Far closer to the new solution than the old fields under new boundary
+    /// pressures, whose first iteration would accelerate the inflow far beyond its final speed.
+    void scale_pressure_level(double s);
     /// Continuation: starts from the fields of a solver on a mesh of the same topology (the same
     /// template with other dimensions). Throws std::invalid_argument if the cell counts differ.
     void initialize_from(const SimplecSolver &other);
