@@ -167,8 +167,10 @@ namespace servodrift::flow
                              const std::vector<double> &phi_b, const std::vector<double> &other, int component,
                              double &scale);
     void solve_iteratively(SparseMatrix &A, Eigen::VectorXd &b, std::vector<double> &phi, const char *equation);
-    // Launder-Sharma low-Reynolds k-epsilon (issue 5): turbulent viscosity, its face values, and one
-    // step of the k and epsilon~ equations
+    // k-epsilon (issue 5): turbulent viscosity, its face values, and one step of the k and epsilon
+    // equations; the two-layer model needs each cell's distance to the nearest wall
+    std::vector<double> wall_distance;
+    void compute_wall_distance();
     void update_face_viscosity();
     void turbulence_step(Residuals &r);
     void solve_momentum(SparseMatrix &A, Eigen::VectorXd &b, std::vector<double> &phi,
@@ -241,7 +243,9 @@ namespace servodrift::flow
       if (mesh.neighbour[f] < 0 && face_kind[f] == Kind::velocity_inlet)
         reference_flux += std::max(0.0, -flux[f]);
     setup_pattern();
-    turbulent = settings.turbulence == FlowSolverParameters::Turbulence::k_epsilon;
+    turbulent = settings.turbulence != FlowSolverParameters::Turbulence::laminar;
+    if (settings.turbulence == FlowSolverParameters::Turbulence::k_epsilon)
+      compute_wall_distance();
     mu_t.assign(n, 0.0);
     k.assign(n, 0.0), epsilon.assign(n, 0.0), k_b.assign(nf, 0.0), epsilon_b.assign(nf, 0.0);
     update_face_viscosity();
@@ -753,30 +757,70 @@ namespace servodrift::flow
       }
   }
 
-  namespace launder_sharma
+  namespace k_epsilon
   {
     // the standard k-epsilon constants (the paper's model, issue 5)
     constexpr double C_mu = 0.09, C1 = 1.44, C2 = 1.92, sigma_k = 1.0, sigma_epsilon = 1.3;
-    /// damping of mu_t near walls: f_mu = exp(-3.4/(1 + Re_t/50)^2)
+    /// Launder-Sharma: damping of mu_t, f_mu = exp(-3.4/(1 + Re_t/50)^2)
     inline double f_mu(double Re_t) { return std::exp(-3.4 / std::pow(1 + Re_t / 50, 2)); }
-    /// damping of the destruction of epsilon~: f_2 = 1 - 0.3 exp(-Re_t^2)
+    /// Launder-Sharma: damping of the destruction of epsilon~, f_2 = 1 - 0.3 exp(-Re_t^2)
     inline double f_2(double Re_t) { return 1 - 0.3 * std::exp(-Re_t * Re_t); }
-  } // namespace launder_sharma
 
-  /// One step of the Launder-Sharma equations, with the fluxes and velocities of this iteration:
-  ///   div(rho u k)  = div((mu + mu_t/sigma_k) grad k) + P - rho epsilon~ - 2 mu |grad sqrt k|^2
-  ///   div(rho u e~) = div((mu + mu_t/sigma_e) grad e~) + C1 e~/k P - C2 f_2 rho e~^2/k
-  ///                   + 2 mu nu_t |grad grad u|^2
-  ///   mu_t = rho C_mu f_mu k^2/e~,  Re_t = rho k^2/(mu e~),  P = mu_t G,
-  ///   G = 2 (u_x^2 + v_r^2 [+ (v/r)^2]) + (u_r + v_x)^2.
-  /// Walls: k = e~ = 0. An inflow brings k = 3/2 (I u_n)^2, epsilon = C_mu^(3/4) k^(3/2)/L; an
-  /// outflow, the axis and a symmetry plane take the cell's values. The sinks are implicit.
+    // Two-layer wall treatment: Wolfshtein's one-equation model with Chen and Patel's constants
+    // near walls, blended into the standard model by Jongen and Marx's function of Re_y.
+    constexpr double kappa = 0.41;
+    const double C_l = kappa * std::pow(C_mu, -0.75); // 2.495
+    constexpr double A_mu = 70;                       // length scale of the mu_t damping
+    const double A_epsilon = 2 * C_l;                 // gives epsilon -> 2 nu k/y^2 at the wall
+    constexpr double Re_y_switch = 60, Re_y_width = 10;
+    /// lambda = 1 in the outer (standard k-epsilon) layer, 0 at the wall
+    inline double outer_weight(double Re_y)
+    {
+      return 0.5 * (1 + std::tanh((Re_y - Re_y_switch) / (Re_y_width / std::atanh(0.98))));
+    }
+  } // namespace k_epsilon
+
+  void SimplecSolver::Implementation::compute_wall_distance()
+  {
+    // shortest distance from each cell centre to a wall face (segment), by brute force: the
+    // valve's meshes have a few thousand wall faces, and it runs once per mesh
+    std::vector<std::array<Vector2, 2>> walls;
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      if (mesh.neighbour[f] < 0 && face_kind[f] == Kind::wall)
+        walls.push_back({mesh.points[mesh.face_points[f][0]], mesh.points[mesh.face_points[f][1]]});
+    wall_distance.assign(mesh.n_cells(), 1e300);
+    for (std::size_t c = 0; c < mesh.n_cells(); ++c)
+      {
+        const Vector2 &x = mesh.cell_center[c];
+        double best = 1e300;
+        for (const auto &w : walls)
+          {
+            const Vector2 t = w[1] - w[0];
+            const double s = std::clamp((x - w[0]).dot(t) / t.squaredNorm(), 0.0, 1.0);
+            best = std::min(best, (x - w[0] - s * t).squaredNorm());
+          }
+        wall_distance[c] = std::sqrt(best);
+      }
+  }
+
+  /// One step of the k and epsilon equations, with the fluxes and velocities of this iteration:
+  ///   div(rho u k) = div((mu + mu_t/sigma_k) grad k) + P - rho epsilon [- D]
+  ///   div(rho u e) = div((mu + mu_t/sigma_e) grad e) + C1 e/k P - C2 [f_2] rho e^2/k [+ E]
+  ///   P = mu_t G,  G = 2 (u_x^2 + v_r^2 [+ (v/r)^2]) + (u_r + v_x)^2.
+  /// Two-layer (the default): mu_t = lambda rho C_mu k^2/e + (1 - lambda) rho C_mu sqrt(k) l_mu and
+  /// e = k^(3/2)/l_e imposed with the weight 1 - lambda, l = C_l y (1 - exp(-Re_y/A)),
+  /// Re_y = sqrt(k) y/nu, lambda(Re_y) from 0 at the wall to 1 beyond Re_y = 60.
+  /// Launder-Sharma: e is e~, mu_t = rho C_mu f_mu k^2/e~, D = 2 mu |grad sqrt k|^2,
+  /// E = 2 mu nu_t |grad grad u|^2, Re_t = rho k^2/(mu e~).
+  /// Walls: k = 0 (and e~ = 0). An inflow brings k = 3/2 (I u_n)^2, epsilon = C_mu^(3/4) k^(3/2)/L;
+  /// an outflow, the axis and a symmetry plane take the cell's values. The sinks are implicit.
   void SimplecSolver::Implementation::turbulence_step(Residuals &r)
   {
-    using namespace launder_sharma;
+    using namespace k_epsilon;
     const std::size_t n = mesh.n_cells(), nf = mesh.n_faces();
     const double rho = fluid.density, mu = fluid.viscosity, alpha = settings.turbulence_relaxation;
     const bool axisymmetric = mesh.geometry == Geometry::axisymmetric;
+    const bool launder_sharma = settings.turbulence == FlowSolverParameters::Turbulence::k_epsilon_launder_sharma;
 
     // boundary values
     double k_inflow = 0, epsilon_inflow = 0;
@@ -787,7 +831,12 @@ namespace servodrift::flow
         const unsigned int P = mesh.owner[f];
         const BoundaryCondition &bc = patch_condition[mesh.face_patch[f]];
         if (face_kind[f] == Kind::wall)
-          k_b[f] = epsilon_b[f] = 0;
+          {
+            k_b[f] = 0;
+            // e~ = 0 at the wall (Launder-Sharma); the two-layer model imposes epsilon in the wall
+            // cells, so the wall value only closes the gradient
+            epsilon_b[f] = launder_sharma ? 0 : epsilon[P];
+          }
         else if (flux[f] < 0 && (face_kind[f] == Kind::velocity_inlet || is_pressure_boundary(face_kind[f])))
           {
             const double u_n = -flux[f] / (rho * mesh.face_area[f]);
@@ -798,59 +847,79 @@ namespace servodrift::flow
         else
           k_b[f] = k[P], epsilon_b[f] = epsilon[P];
       }
-    // a start from nothing: the inflow's turbulence everywhere (the lid's speed in a closed cavity)
+    // A start from nothing (or from a laminar solution): turbulence of 5 % intensity of the local
+    // flow speed, at least the inflow's, with the inflow's length scale. Low-Reynolds and two-layer
+    // models have a laminar branch (k = 0 solves them), so a seed as weak as a slow plenum's inflow
+    // would never grow where the real flow is turbulent; a strong seed decays where it is not.
     if (*std::max_element(k.begin(), k.end()) <= 0)
       {
-        if (k_inflow <= 0)
+        const double L = patch_condition[0].turbulence_length;
+        double k_start_max = 0, epsilon_start_max = 0;
+        for (std::size_t c = 0; c < n; ++c)
           {
-            double speed = 0;
-            for (std::size_t c = 0; c < n; ++c)
-              speed = std::max(speed, std::hypot(u[c], v[c]));
-            k_inflow = 1.5 * std::pow(0.05 * speed, 2);
-            epsilon_inflow = std::pow(C_mu, 0.75) * std::pow(k_inflow, 1.5) / patch_condition[0].turbulence_length;
+            k[c] = std::max(k_inflow, 1.5 * std::pow(0.05 * std::hypot(u[c], v[c]), 2));
+            epsilon[c] = std::max(epsilon_inflow, std::pow(C_mu, 0.75) * std::pow(k[c], 1.5) / L);
+            k_start_max = std::max(k_start_max, k[c]), epsilon_start_max = std::max(epsilon_start_max, epsilon[c]);
           }
-        std::fill(k.begin(), k.end(), k_inflow);
-        std::fill(epsilon.begin(), epsilon.end(), std::max(epsilon_inflow, 1e-300));
+        if (k_inflow <= 0)
+          k_inflow = k_start_max, epsilon_inflow = epsilon_start_max;
       }
     const double k_floor = 1e-12 * std::max(k_inflow, *std::max_element(k.begin(), k.end()));
     const double epsilon_floor = 1e-12 * std::max(epsilon_inflow, *std::max_element(epsilon.begin(), epsilon.end()));
 
-    // velocity gradients, production, the low-Reynolds terms D and E
+    // velocity gradients and production
     const std::vector<Vector2> gu = mesh.gradient(u, u_b), gv = mesh.gradient(v, v_b);
-    std::vector<double> sqrt_k(n), sqrt_k_b(nf, 0.0);
-    for (std::size_t c = 0; c < n; ++c)
-      sqrt_k[c] = std::sqrt(std::max(k[c], 0.0));
-    for (std::size_t f = 0; f < nf; ++f)
-      if (mesh.neighbour[f] < 0)
-        sqrt_k_b[f] = std::sqrt(std::max(k_b[f], 0.0));
-    const std::vector<Vector2> g_sqrt_k = mesh.gradient(sqrt_k, sqrt_k_b);
-    // second derivatives: gradients of the four velocity-gradient components (zero-gradient at the boundary)
-    std::vector<double> second(n, 0.0);
-    {
-      std::vector<double> component(n), component_b(nf, 0.0);
-      for (int j = 0; j < 4; ++j)
-        {
-          for (std::size_t c = 0; c < n; ++c)
-            component[c] = j < 2 ? gu[c][j] : gv[c][j - 2];
-          for (std::size_t f = 0; f < nf; ++f)
-            if (mesh.neighbour[f] < 0)
-              component_b[f] = component[mesh.owner[f]];
-          const std::vector<Vector2> g = mesh.gradient(component, component_b);
-          for (std::size_t c = 0; c < n; ++c)
-            second[c] += g[c].squaredNorm();
-        }
-    }
-    std::vector<double> production(n), low_re_D(n), low_re_E(n), Re_t(n);
+    std::vector<double> production(n), strain(n);
     for (std::size_t c = 0; c < n; ++c)
       {
         double G = 2 * (gu[c].x() * gu[c].x() + gv[c].y() * gv[c].y()) + std::pow(gu[c].y() + gv[c].x(), 2);
         if (axisymmetric)
           G += 2 * std::pow(v[c] / mesh.cell_center[c].y(), 2);
         production[c] = mu_t[c] * G;
-        low_re_D[c] = 2 * mu * g_sqrt_k[c].squaredNorm();
-        low_re_E[c] = 2 * mu * (mu_t[c] / rho) * second[c];
-        Re_t[c] = rho * k[c] * k[c] / (mu * std::max(epsilon[c], epsilon_floor));
+        strain[c] = std::sqrt(0.5 * G); // |S| = sqrt(S_ij S_ij)
       }
+    // Launder-Sharma's low-Reynolds terms D and E; the two-layer model's wall-layer epsilon and weight
+    std::vector<double> low_re_D(n, 0.0), low_re_E(n, 0.0), Re_t(n, 0.0), layer_epsilon(n, 0.0),
+      layer_weight(n, 0.0);
+    if (launder_sharma)
+      {
+        std::vector<double> sqrt_k(n), sqrt_k_b(nf, 0.0);
+        for (std::size_t c = 0; c < n; ++c)
+          sqrt_k[c] = std::sqrt(std::max(k[c], 0.0));
+        for (std::size_t f = 0; f < nf; ++f)
+          if (mesh.neighbour[f] < 0)
+            sqrt_k_b[f] = std::sqrt(std::max(k_b[f], 0.0));
+        const std::vector<Vector2> g_sqrt_k = mesh.gradient(sqrt_k, sqrt_k_b);
+        // second derivatives: gradients of the four velocity-gradient components (zero-gradient at the boundary)
+        std::vector<double> second(n, 0.0);
+        std::vector<double> component(n), component_b(nf, 0.0);
+        for (int j = 0; j < 4; ++j)
+          {
+            for (std::size_t c = 0; c < n; ++c)
+              component[c] = j < 2 ? gu[c][j] : gv[c][j - 2];
+            for (std::size_t f = 0; f < nf; ++f)
+              if (mesh.neighbour[f] < 0)
+                component_b[f] = component[mesh.owner[f]];
+            const std::vector<Vector2> g = mesh.gradient(component, component_b);
+            for (std::size_t c = 0; c < n; ++c)
+              second[c] += g[c].squaredNorm();
+          }
+        for (std::size_t c = 0; c < n; ++c)
+          {
+            low_re_D[c] = 2 * mu * g_sqrt_k[c].squaredNorm();
+            low_re_E[c] = 2 * mu * (mu_t[c] / rho) * second[c];
+            Re_t[c] = rho * k[c] * k[c] / (mu * std::max(epsilon[c], epsilon_floor));
+          }
+      }
+    else
+      for (std::size_t c = 0; c < n; ++c)
+        {
+          const double kc = std::max(k[c], k_floor), y = wall_distance[c];
+          const double Re_y = rho * std::sqrt(kc) * y / mu;
+          const double l_epsilon = C_l * y * (1 - std::exp(-Re_y / A_epsilon));
+          layer_epsilon[c] = std::pow(kc, 1.5) / std::max(l_epsilon, 1e-300);
+          layer_weight[c] = 1 - outer_weight(Re_y);
+        }
 
     // face diffusivities mu + mu_t/sigma
     std::vector<double> gamma(nf);
@@ -860,37 +929,56 @@ namespace servodrift::flow
     };
     double scale = 0;
     Eigen::VectorXd b;
-
-    // k
-    diffusivity(sigma_k);
-    assemble_transport(matrix_k, b, k, k_b, gamma);
-    for (std::size_t c = 0; c < n; ++c)
-      {
-        const double V = mesh.cell_volume[c], kc = std::max(k[c], k_floor);
-        diag[c] += (rho * std::max(epsilon[c], 0.0) + low_re_D[c]) / kc * V;
-        b[c] += production[c] * V;
-      }
-    // residuals relative to the level of k and e~ the inflow brings (or the largest), not to the
+    // residuals relative to the level of k and e the inflow brings (or the largest), not to the
     // local values: where turbulence decays towards laminar flow, those vanish and a relative
     // residual would never fall
     const double k_level = std::max(k_inflow, 1e-6 * *std::max_element(k.begin(), k.end()));
     const double epsilon_level = std::max(epsilon_inflow, 1e-6 * *std::max_element(epsilon.begin(), epsilon.end()));
     std::vector<double> level(n);
+
+    // k: the dissipation rho e (+ D) as an implicit sink rho e/k k
+    diffusivity(sigma_k);
+    assemble_transport(matrix_k, b, k, k_b, gamma);
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        const double V = mesh.cell_volume[c], kc = std::max(k[c], k_floor);
+        const double e = launder_sharma ? std::max(epsilon[c], 0.0) :
+                                          layer_weight[c] * layer_epsilon[c] + (1 - layer_weight[c]) * std::max(epsilon[c], 0.0);
+        diag[c] += (rho * e + low_re_D[c]) / kc * V;
+        b[c] += production[c] * V;
+      }
     for (std::size_t c = 0; c < n; ++c)
       level[c] = std::max(k[c], k_level);
     r.k = relax(matrix_k, b, k, alpha, level, scale);
     r.k /= std::max(scale, 1e-300);
     solve_iteratively(matrix_k, b, k, "k");
 
-    // epsilon~
+    // epsilon
     diffusivity(sigma_epsilon);
     assemble_transport(matrix_epsilon, b, epsilon, epsilon_b, gamma);
     for (std::size_t c = 0; c < n; ++c)
       {
         const double V = mesh.cell_volume[c], kc = std::max(k[c], k_floor);
         const double ratio = std::max(epsilon[c], 0.0) / kc;
-        diag[c] += C2 * f_2(Re_t[c]) * rho * ratio * V;
+        diag[c] += C2 * (launder_sharma ? f_2(Re_t[c]) : 1.0) * rho * ratio * V;
         b[c] += (C1 * ratio * production[c] + low_re_E[c]) * V;
+      }
+    if (!launder_sharma)
+      {
+        // the wall layer: each row becomes (1 - w)(transport) + w a_P (e - e_layer), so that epsilon
+        // is the one-equation model's where w = 1 and the transport equation's where w = 0
+        const int *inner = matrix_epsilon.innerIndexPtr(), *outer = matrix_epsilon.outerIndexPtr();
+        double *value = matrix_epsilon.valuePtr();
+        for (std::size_t column = 0; column < n; ++column)
+          for (int j = outer[column]; j < outer[column + 1]; ++j)
+            if (static_cast<std::size_t>(inner[j]) != column)
+              value[j] *= 1 - layer_weight[inner[j]];
+        for (std::size_t c = 0; c < n; ++c)
+          {
+            const double w = layer_weight[c];
+            b[c] = (1 - w) * b[c] + w * diag[c] * layer_epsilon[c];
+            // keeps sum |a_nb| <= a_P (diagonal dominance) for any w
+          }
       }
     for (std::size_t c = 0; c < n; ++c)
       level[c] = std::max(epsilon[c], epsilon_level);
@@ -903,9 +991,23 @@ namespace servodrift::flow
       {
         k[c] = std::max(k[c], k_floor);
         epsilon[c] = std::max(epsilon[c], epsilon_floor);
-        const double Re = rho * k[c] * k[c] / (mu * epsilon[c]);
-        const double target = std::min(rho * C_mu * f_mu(Re) * k[c] * k[c] / epsilon[c], 1e5 * mu);
-        mu_t[c] += alpha * (target - mu_t[c]);
+        double target;
+        if (launder_sharma)
+          target = rho * C_mu * f_mu(rho * k[c] * k[c] / (mu * epsilon[c])) * k[c] * k[c] / epsilon[c];
+        else
+          {
+            const double y = wall_distance[c], Re_y = rho * std::sqrt(k[c]) * y / mu;
+            const double l_mu = C_l * y * (1 - std::exp(-Re_y / A_mu));
+            const double lambda = outer_weight(Re_y);
+            // Durbin's realizability bound on the time scale, T <= alpha/(sqrt 6 C_mu |S|), alpha = 0.6:
+            // the normal stresses of the Boussinesq form stay >= 0 where the strain is strong (the
+            // orifice's entry, the jet's stagnation on the flapper), which the standard model violates
+            double time_scale = k[c] / epsilon[c];
+            if (settings.realizability_coefficient > 0)
+              time_scale = std::min(time_scale, settings.realizability_coefficient / (std::sqrt(6.0) * C_mu * std::max(strain[c], 1e-300)));
+            target = lambda * rho * C_mu * k[c] * time_scale + (1 - lambda) * rho * C_mu * std::sqrt(k[c]) * l_mu;
+          }
+        mu_t[c] += settings.turbulent_viscosity_relaxation * (std::min(target, 1e5 * mu) - mu_t[c]);
       }
   }
 

@@ -55,6 +55,6 @@ Recombine Surface{1, 2, 3, 4, 5};
 
 Physical Surface("fluid") = {1, 2, 3, 4, 5};
 Physical Curve("inlet") = {7, 11};
-Physical Curve("outlet") = {10, 15, 16};
-Physical Curve("wall") = {12, 5, 14, 13};
+Physical Curve("outlet") = {16};
+Physical Curve("wall") = {12, 5, 14, 13, 10, 15};
 Physical Curve("axis") = {1, 2, 3};

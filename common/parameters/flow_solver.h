@@ -17,9 +17,11 @@ namespace servodrift
     double tolerance;               ///< scaled residuals of momentum and continuity [1]
     unsigned int max_iterations;    ///< SIMPLEC iterations before the run fails
     unsigned int report_interval;   ///< print the residuals every n iterations (0: never)
-    enum class Turbulence { laminar, k_epsilon };
-    Turbulence turbulence;          ///< laminar, or Launder-Sharma low-Reynolds k-epsilon
-    double turbulence_relaxation;   ///< under-relaxation of k, epsilon and mu_t [1]
+    enum class Turbulence { laminar, k_epsilon, k_epsilon_launder_sharma };
+    Turbulence turbulence;          ///< laminar; standard k-epsilon, two-layer; Launder-Sharma k-epsilon
+    double turbulence_relaxation;   ///< under-relaxation of the k and epsilon equations [1]
+    double turbulent_viscosity_relaxation; ///< under-relaxation of mu_t [1]
+    double realizability_coefficient; ///< Durbin's time-scale bound alpha (two-layer k-epsilon; 0: off) [1]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(dealii::ParameterHandler &prm);
