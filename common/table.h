@@ -13,7 +13,8 @@
 //
 // The first n_axes columns of a schema are the grid axes (a full tensor grid); the others are
 // values. flag: 0 = computed within the model's validity, 1 = a law was clamped to its validity
-// window (C6), 2 = the solver did not converge. The number of rows is stamped so that a truncated
+// window (C6), 2 = the field solver did not converge (the reduced-order value stands in), 3 = an
+// exact limit of the field level (dp = 0 or a closed gap: no flow). The number of rows is stamped so that a truncated
 // file is refused.
 #include <string>
 #include <vector>
@@ -49,7 +50,8 @@ namespace servodrift
   {
     constexpr double computed = 0;      ///< within the model's validity
     constexpr double clamped = 1;       ///< a law was clamped to its validity window (C6)
-    constexpr double not_converged = 2; ///< the solver did not converge
+    constexpr double not_converged = 2; ///< the field solver did not converge: the reduced-order value stands in
+    constexpr double limit = 3;         ///< an exact limit, not a solution (no flow: dp = 0 or a closed gap)
   } // namespace flags
 
   class Table

@@ -394,6 +394,15 @@ namespace servodrift
     require_increasing(sw.motor_currents, "Sweeps/Motor currents");
     require_increasing(sw.pressure_fractions, "Sweeps/Pressure fractions");
     require_increasing(sw.gap_fractions, "Sweeps/Gap fractions");
+    require_increasing(sw.field_orifice_pressure_fractions, "Sweeps/Field orifice pressure fractions");
+    require_increasing(sw.field_gap_fractions, "Sweeps/Field gap fractions");
+    require_increasing(sw.field_nozzle_pressure_fractions, "Sweeps/Field nozzle pressure fractions");
+    for (const auto &[list, entry] : {std::make_pair(&sw.field_orifice_pressure_fractions, "Sweeps/Field orifice pressure fractions"),
+                                      std::make_pair(&sw.field_gap_fractions, "Sweeps/Field gap fractions"),
+                                      std::make_pair(&sw.field_nozzle_pressure_fractions, "Sweeps/Field nozzle pressure fractions")})
+      if (!(list->front() > 0))
+        refuse(entry, "starts with " + format_number(list->front()) +
+                        ": the field level computes only flowing cases (> 0; the table adds the zero row itself)");
     require_increasing(sw.drift_temperatures, "Sweeps/Drift temperatures");
     require_increasing(sw.deviation_angles, "Sweeps/Deviation angles", units::degree);
 

@@ -5,6 +5,7 @@
 #include "common/thermal_laws.h"
 #include "common/units.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -22,180 +23,220 @@ namespace servodrift::flow
   namespace
   {
     constexpr double mm = 1e-3; // the templates are in mm
-
-    laws::PilotStageGeometry geometry_at(const ValveDescription &valve, double T)
-    {
-      return laws::pilot_stage_geometry(valve.pilot, valve.armature, valve.expansion, T,
-                                        valve.operating.reference_temperature);
-    }
+    /// Start-up: a case at rest is first solved laminar at this ideal-velocity Reynolds number (or
+    /// its own, if lower), where the laminar flow from rest is steady and converges in a few hundred
+    /// iterations; laminar runs from rest at Re_0 of about 1000 and above do not settle.
+    constexpr double start_up_reynolds_number = 300;
 
     /// sqrt(2 dp / rho): the ideal (Bernoulli) velocity of a pressure difference [m/s].
     double ideal_velocity(double dp, double rho) { return std::sqrt(2 * dp / rho); }
 
-    /// Sets the inlet's total pressure dp above the outlet and solves (from the last fields): the
-    /// flow rate, the lowest pressure and the iterations of a case, orifice or nozzle alike.
-    PilotFieldResult solve_case(SimplecSolver &solver, double dp, const char *what)
+    FvMesh make_mesh(const ValveDescription &valve, PilotGeometry kind, const PilotFieldCase &c, double h,
+                     double &bore_radius)
     {
-      if (!(dp > 0) || !std::isfinite(dp))
-        throw InputError(std::string("flow: ") + what + ": pressure difference " + format_number(dp) +
-                         " Pa must be > 0");
-      // continuation from the last fields, scaled to the new pressure level first
-      const double previous = solver.boundary_pressure("inlet");
-      if (previous > 0 && previous != dp)
-        solver.scale_pressure_level(dp / previous);
-      solver.set_boundary_pressure("inlet", dp);
-      const SolveReport report = solver.solve();
-      PilotFieldResult r;
-      r.pressure_difference = dp;
-      r.flow_rate = solver.flow_rate("outlet");
-      r.minimum_pressure = solver.minimum_pressure();
-      r.iterations = report.iterations;
-      return r;
-    }
-  } // namespace
-
-  PilotFieldCase pilot_field_case(const ValveDescription &valve, double T)
-  {
-    const laws::Oil oil(valve.fluid, valve.operating.reference_temperature);
-    return {T, {oil.density(T).value, oil.dynamic_viscosity(T)}, valve.pilot.field_resolution};
-  }
-
-  // ---- fixed orifice ---------------------------------------------------------------------------
-
-  struct FixedOrificeField::Implementation
-  {
-    double bore_radius;
-    FluidProperties fluid;
-    FvMesh mesh;
-    SimplecSolver solver;
-
-    static FvMesh make_mesh(const ValveDescription &valve, const PilotFieldCase &c, double &r0)
-    {
-      const auto g = geometry_at(valve, c.temperature);
-      r0 = 0.5 * g.fixed_orifice_diameter;
-      const double l = g.fixed_orifice_length;
-      const double plenum = valve.pilot.field_plenum_size * r0;
-      const std::map<std::string, double> parameters{
-        {"r0", r0 / mm}, {"l", l / mm}, {"ru", plenum / mm}, {"lu", plenum / mm}, {"rd", 8 * r0 / mm},
-        {"ld", valve.pilot.field_chamber_length * r0 / mm}, {"res", c.resolution}};
-      return FvMesh(mesh_template_all_groups({"meshes/fixed_orifice.geo", embedded::fixed_orifice_geo, mm}, parameters),
-                    Geometry::axisymmetric, "meshes/fixed_orifice.geo");
-    }
-
-    Implementation(const ValveDescription &valve, const PilotFieldCase &c)
-      : fluid(c.fluid)
-      , mesh(make_mesh(valve, c, bore_radius))
-      , solver(mesh, fluid,
-               {{"inlet", BoundaryCondition::total_pressure_inlet(0)},
-                {"outlet", BoundaryCondition::pressure_outlet(0)},
-                {"wall", BoundaryCondition::wall()},
-                {"axis", BoundaryCondition::axis()}},
-               valve.flow_solver)
-    {}
-  };
-
-  FixedOrificeField::FixedOrificeField(const ValveDescription &valve, const PilotFieldCase &c)
-    : impl(std::make_unique<Implementation>(valve, c))
-  {}
-  FixedOrificeField::~FixedOrificeField() = default;
-
-  PilotFieldResult FixedOrificeField::solve(double dp)
-  {
-    auto &d = *impl;
-    PilotFieldResult r = solve_case(d.solver, dp, "fixed orifice");
-    const double area = units::pi * d.bore_radius * d.bore_radius, v_ideal = ideal_velocity(dp, d.fluid.density);
-    r.discharge_coefficient = r.flow_rate / (area * v_ideal);
-    r.reynolds_number = 2 * d.bore_radius * v_ideal * d.fluid.density / d.fluid.viscosity; // E17
-    return r;
-  }
-
-  void FixedOrificeField::initialize_from(const FixedOrificeField &other) { impl->solver.initialize_from(other.impl->solver); }
-  void FixedOrificeField::set_failure_output(const std::string &f) { impl->solver.failure_output = f; }
-  void FixedOrificeField::write_vtu(const std::string &filename) const { impl->solver.write_vtu(filename); }
-  std::size_t FixedOrificeField::n_cells() const { return impl->mesh.n_cells(); }
-  double FixedOrificeField::bore_radius() const { return impl->bore_radius; }
-  const SimplecSolver &FixedOrificeField::solver() const { return impl->solver; }
-  const FvMesh &FixedOrificeField::mesh() const { return impl->mesh; }
-
-  // ---- nozzle-flapper gap ----------------------------------------------------------------------
-
-  struct NozzleFlapperField::Implementation
-  {
-    double nozzle_diameter, gap;
-    FluidProperties fluid;
-    FvMesh mesh;
-    SimplecSolver solver;
-    std::vector<unsigned int> exit_faces; ///< interior faces of the bore's exit section x = 0, r < r_N
-
-    static FvMesh make_mesh(const ValveDescription &valve, const PilotFieldCase &c, double h, double &D_N)
-    {
-      const auto g = geometry_at(valve, c.temperature);
-      D_N = g.nozzle_diameter;
-      const double rn = 0.5 * D_N, rl = 0.5 * g.land_diameter;
-      if (!(h > 0))
+      const auto g = laws::pilot_stage_geometry(valve.pilot, valve.armature, valve.expansion, c.temperature,
+                                                valve.operating.reference_temperature);
+      if (kind == PilotGeometry::fixed_orifice)
+        {
+          const double r0 = 0.5 * g.fixed_orifice_diameter, plenum = valve.pilot.field_plenum_size * r0;
+          bore_radius = r0;
+          const std::map<std::string, double> parameters{
+            {"r0", r0 / mm},           {"l", g.fixed_orifice_length / mm}, {"ru", plenum / mm},
+            {"lu", plenum / mm},       {"rd", 8 * r0 / mm},                {"ld", valve.pilot.field_chamber_length * r0 / mm},
+            {"res", c.resolution}};
+          return FvMesh(mesh_template_all_groups({"meshes/fixed_orifice.geo", embedded::fixed_orifice_geo, mm}, parameters),
+                        Geometry::axisymmetric, "meshes/fixed_orifice.geo");
+        }
+      const double rn = 0.5 * g.nozzle_diameter, rl = 0.5 * g.land_diameter;
+      bore_radius = rn;
+      if (!(h > 0) || !std::isfinite(h))
         throw InputError("flow: nozzle-flapper gap " + format_number(h) + " m must be > 0 at the field level");
       const std::map<std::string, double> parameters{
-        {"rn", rn / mm},     {"rl", rl / mm},     {"h", h / mm},      {"ro", valve.pilot.field_outlet_radius * rl / mm},
+        {"rn", rn / mm},     {"rl", rl / mm},     {"h", h / mm},       {"ro", valve.pilot.field_outlet_radius * rl / mm},
         {"rc", 2 * rn / mm}, {"lc", 2 * rn / mm}, {"lb", 4 * rn / mm}, {"le", 2 * rn / mm},
         {"res", c.resolution}};
       return FvMesh(mesh_template_all_groups({"meshes/nozzle_flapper.geo", embedded::nozzle_flapper_geo, mm}, parameters),
                     Geometry::axisymmetric, "meshes/nozzle_flapper.geo");
     }
 
-    Implementation(const ValveDescription &valve, const PilotFieldCase &c, double h)
-      : gap(h)
-      , fluid(c.fluid)
-      , mesh(make_mesh(valve, c, h, nozzle_diameter))
-      , solver(mesh, fluid,
-               {{"inlet", BoundaryCondition::total_pressure_inlet(0)},
-                {"outlet", BoundaryCondition::pressure_outlet(0)},
-                {"nozzle", BoundaryCondition::wall()},
-                {"land", BoundaryCondition::wall()},
-                {"nozzle_outside", BoundaryCondition::wall()},
-                {"flapper", BoundaryCondition::wall()},
-                {"axis", BoundaryCondition::axis()}},
-               valve.flow_solver)
+    std::map<std::string, BoundaryCondition> boundaries(PilotGeometry kind)
     {
-      const double rn = 0.5 * nozzle_diameter, tolerance = 1e-6 * rn;
-      for (std::size_t f = 0; f < mesh.n_faces(); ++f)
-        if (mesh.neighbour[f] >= 0 && std::abs(mesh.face_center[f].x()) < tolerance && mesh.face_center[f].y() < rn)
-          exit_faces.push_back(f);
+      std::map<std::string, BoundaryCondition> b{{"inlet", BoundaryCondition::total_pressure_inlet(0)},
+                                                 {"outlet", BoundaryCondition::pressure_outlet(0)},
+                                                 {"axis", BoundaryCondition::axis()}};
+      if (kind == PilotGeometry::fixed_orifice)
+        b.emplace("wall", BoundaryCondition::wall());
+      else
+        for (const char *wall : {"nozzle", "land", "nozzle_outside", "flapper"})
+          b.emplace(wall, BoundaryCondition::wall());
+      return b;
+    }
+
+    FlowSolverParameters with_model(FlowSolverParameters s, FlowSolverParameters::Turbulence t)
+    {
+      s.turbulence = t;
+      return s;
+    }
+  } // namespace
+
+  PilotFieldCase pilot_field_case(const ValveDescription &valve, double T)
+  {
+    const laws::Oil oil(valve.fluid, valve.operating.reference_temperature);
+    oil.check_temperature(T, "flow case temperature");
+    return {T, {oil.density(T).value, oil.dynamic_viscosity(T)}, valve.pilot.field_resolution, valve.flow_solver.turbulence};
+  }
+
+  struct PilotField::Implementation
+  {
+    PilotGeometry kind;
+    ValveDescription valve;
+    PilotFieldCase conditions;
+    double gap, bore_radius = 0;
+    FvMesh mesh;
+    SimplecSolver solver;
+    bool at_rest = true;
+    std::vector<unsigned int> exit_faces; ///< nozzle: interior faces of the bore's exit section x = 0, r < r_N
+
+    Implementation(const ValveDescription &valve_, PilotGeometry kind_, const PilotFieldCase &c, double h)
+      : kind(kind_)
+      , valve(valve_)
+      , conditions(c)
+      , gap(h)
+      , mesh(make_mesh(valve_, kind_, c, h, bore_radius))
+      , solver(mesh, c.fluid, boundaries(kind_), with_model(valve_.flow_solver, c.turbulence))
+    {
+      if (kind == PilotGeometry::nozzle_flapper)
+        {
+          const double tolerance = 1e-6 * bore_radius;
+          for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+            if (mesh.neighbour[f] >= 0 && std::abs(mesh.face_center[f].x()) < tolerance &&
+                mesh.face_center[f].y() < bore_radius)
+              exit_faces.push_back(f);
+        }
+      // converged when, besides the residuals, Q (and the flapper force) settle (issue 5)
+      const auto &s = valve.flow_solver;
+      solver.set_convergence_monitor(
+        [this] {
+          std::vector<double> m{solver.flow_rate("outlet")};
+          if (kind == PilotGeometry::nozzle_flapper)
+            m.push_back(solver.pressure_force("flapper", Vector2(1, 0)));
+          return m;
+        },
+        s.monitor_iterations, s.monitor_tolerance);
+    }
+
+    double ideal_reynolds_number(double dp) const
+    {
+      const double length = kind == PilotGeometry::fixed_orifice ? 2 * bore_radius : 2 * gap;
+      return length * ideal_velocity(dp, conditions.fluid.density) * conditions.fluid.density / conditions.fluid.viscosity;
+    }
+
+    /// A case at rest: a laminar solve at the start-up Reynolds number on the same mesh, whose
+    /// fields this case then continues from. Returns its iterations.
+    unsigned int start_up(double dp)
+    {
+      const double Re = ideal_reynolds_number(dp);
+      const double dp_start = Re > start_up_reynolds_number ? dp * std::pow(start_up_reynolds_number / Re, 2) : dp;
+      FlowSolverParameters s = with_model(valve.flow_solver, FlowSolverParameters::Turbulence::laminar);
+      SimplecSolver laminar(mesh, conditions.fluid, boundaries(kind), s);
+      laminar.failure_output = solver.failure_output;
+      laminar.set_boundary_pressure("inlet", dp_start);
+      const SolveReport report = laminar.solve();
+      solver.set_fields(laminar.fields());
+      at_rest = false;
+      return report.iterations;
     }
   };
 
-  NozzleFlapperField::NozzleFlapperField(const ValveDescription &valve, const PilotFieldCase &c, double gap)
-    : impl(std::make_unique<Implementation>(valve, c, gap))
+  PilotField::PilotField(const ValveDescription &valve, PilotGeometry geometry, const PilotFieldCase &c, double gap)
+    : impl(std::make_unique<Implementation>(valve, geometry, c, gap))
   {}
-  NozzleFlapperField::~NozzleFlapperField() = default;
+  PilotField::~PilotField() = default;
+  PilotField::PilotField(PilotField &&) noexcept = default;
 
-  void NozzleFlapperField::initialize_from(const NozzleFlapperField &other) { impl->solver.initialize_from(other.impl->solver); }
-
-  PilotFieldResult NozzleFlapperField::solve(double dp)
+  PilotFieldResult PilotField::solve(double dp)
   {
     auto &d = *impl;
-    PilotFieldResult r = solve_case(d.solver, dp, "nozzle-flapper");
-    const double D_N = d.nozzle_diameter, h = d.gap, v_ideal = ideal_velocity(dp, d.fluid.density);
+    const char *what = d.kind == PilotGeometry::fixed_orifice ? "fixed orifice" : "nozzle-flapper";
+    if (!(dp > 0) || !std::isfinite(dp))
+      throw InputError(std::string("flow: ") + what + ": pressure difference " + format_number(dp) +
+                       " Pa must be > 0 (inlet total pressure above the outlet's)");
+    PilotFieldResult r;
+    if (d.at_rest)
+      r.iterations += d.start_up(dp);
+    // continuation from the last fields, scaled to the new pressure level first
+    const double previous = d.solver.boundary_pressure("inlet");
+    if (previous > 0 && previous != dp)
+      d.solver.scale_pressure_level(dp / previous);
+    d.solver.set_boundary_pressure("inlet", dp);
+    d.at_rest = false;
+    r.iterations += d.solver.solve().iterations;
+
+    const double rho = d.conditions.fluid.density, mu = d.conditions.fluid.viscosity;
+    const double v_ideal = ideal_velocity(dp, rho);
+    r.pressure_difference = dp;
+    r.turbulence = d.conditions.turbulence;
+    r.flow_rate = d.solver.flow_rate("outlet");
+    r.minimum_pressure = d.solver.minimum_pressure();
+    const auto &operating = d.valve.operating;
+    // the outlet's absolute pressure: the control pressure p_s - dp downstream of the orifice, the
+    // return pressure downstream of the nozzle (gauge + ambient)
+    const double downstream = (d.kind == PilotGeometry::fixed_orifice ? operating.supply_pressure - dp : operating.return_pressure) +
+                              operating.ambient_pressure;
+    r.minimum_absolute_pressure = downstream + r.minimum_pressure;
+    r.cavitating = r.minimum_absolute_pressure < d.valve.fluid.vapour_pressure;
+    const auto y_plus = d.solver.wall_y_plus();
+    r.max_wall_y_plus = *std::max_element(y_plus.begin(), y_plus.end());
+
+    if (d.kind == PilotGeometry::fixed_orifice)
+      {
+        const double area = units::pi * d.bore_radius * d.bore_radius;
+        r.discharge_coefficient = r.flow_rate / (area * v_ideal);
+        r.reynolds_number = 2 * d.bore_radius * v_ideal * rho / mu; // E17
+        return r;
+      }
+    const double D_N = 2 * d.bore_radius, h = d.gap;
     r.discharge_coefficient = r.flow_rate / (units::pi * D_N * h * v_ideal); // curtain area (4.2)
     const double hydraulic_diameter = 2 * units::pi * D_N * h / (units::pi * D_N + h);
-    r.reynolds_number = hydraulic_diameter * r.discharge_coefficient * v_ideal * d.fluid.density / d.fluid.viscosity; // E18
+    r.reynolds_number = hydraulic_diameter * r.discharge_coefficient * v_ideal * rho / mu; // E18
     const Vector2 axial(1, 0);
     r.flapper_force = d.solver.pressure_force("flapper", axial);
     r.land_force = d.solver.pressure_force("land", -axial);
-    double sum = 0, area = 0;
+    // the bore's exit plane: mean pressure and axial momentum (p + rho u_x^2) through it
+    double sum = 0, area = 0, momentum = 0;
     const auto &p = d.solver.pressure();
+    const auto &u = d.solver.velocity_x();
+    const auto &F = d.solver.mass_flux();
     for (unsigned int f : d.exit_faces)
       {
         const double w = d.mesh.face_weight(f);
-        sum += (w * p[d.mesh.owner[f]] + (1 - w) * p[d.mesh.neighbour[f]]) * d.mesh.face_area[f];
+        const unsigned int P = d.mesh.owner[f], N = d.mesh.neighbour[f];
+        const double p_f = w * p[P] + (1 - w) * p[N], u_f = w * u[P] + (1 - w) * u[N];
+        sum += p_f * d.mesh.face_area[f];
         area += d.mesh.face_area[f];
+        // F n_x = rho u_x A: the +x momentum flux rho u_x^2 A
+        momentum += p_f * d.mesh.face_area[f] + F[f] * d.mesh.face_normal[f].x() * u_f;
       }
     r.bore_pressure = sum / area;
+    r.jet_force = 2 * units::pi * momentum;
     return r;
   }
 
-  void NozzleFlapperField::set_failure_output(const std::string &f) { impl->solver.failure_output = f; }
-  void NozzleFlapperField::write_vtu(const std::string &filename) const { impl->solver.write_vtu(filename); }
-  std::size_t NozzleFlapperField::n_cells() const { return impl->mesh.n_cells(); }
-  const SimplecSolver &NozzleFlapperField::solver() const { return impl->solver; }
-  const FvMesh &NozzleFlapperField::mesh() const { return impl->mesh; }
+  void PilotField::initialize_from(const PilotField &other) { set_fields(other.fields()); }
+  FlowFields PilotField::fields() const { return impl->solver.fields(); }
+  void PilotField::set_fields(const FlowFields &f)
+  {
+    impl->solver.set_fields(f);
+    impl->at_rest = false;
+  }
+  bool PilotField::at_rest() const { return impl->at_rest; }
+  void PilotField::set_failure_output(const std::string &f) { impl->solver.failure_output = f; }
+  void PilotField::write_vtu(const std::string &filename) const { impl->solver.write_vtu(filename); }
+  std::size_t PilotField::n_cells() const { return impl->mesh.n_cells(); }
+  PilotGeometry PilotField::geometry() const { return impl->kind; }
+  double PilotField::gap() const { return impl->gap; }
+  double PilotField::bore_radius() const { return impl->bore_radius; }
+  double PilotField::ideal_reynolds_number(double dp) const { return impl->ideal_reynolds_number(dp); }
+  const SimplecSolver &PilotField::solver() const { return impl->solver; }
+  const FvMesh &PilotField::mesh() const { return impl->mesh; }
 } // namespace servodrift::flow

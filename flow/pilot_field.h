@@ -1,13 +1,18 @@
 #pragma once
 // Field level of the pilot stage (model.md 4.2, D11): the fixed orifice and the nozzle-flapper gap as
 // axisymmetric cases of the finite-volume solver, on the parametric meshes meshes/fixed_orifice.geo
-// and meshes/nozzle_flapper.geo with every dimension at the case's temperature. A case is solved
-// for a sequence of pressure differences, each starting from the previous converged fields
-// (continuation); a nozzle case can also start from a neighbouring gap's fields (same topology).
+// and meshes/nozzle_flapper.geo with every dimension at the case's temperature.
+//
+// A case is solved at one pressure difference after another, each from the last converged fields
+// scaled to the new pressure level (continuation); a case can also start from another case's fields
+// of the same mesh topology (another gap or temperature, or a laminar solution under a turbulent
+// case). A case that starts from rest is first solved laminar at a pressure difference low enough
+// for a steady laminar flow (ideal-velocity Reynolds number 300), then carried to its own.
 //
 // Extraction (model.md 4.2): Q from the outlet flux; C_d = Q/(A sqrt(2 dp/rho)) with dp from the
 // upstream stagnation pressure (the inlet's total pressure); Re as in E17 (orifice) and E18 (nozzle);
-// flapper force = 2 pi int (p - p_r) r dr over the flapper face.
+// flapper force = 2 pi int (p - p_r) r dr over the flapper face; and for C12 the land's force, the
+// axial momentum through the bore's exit and the lowest absolute pressure against the vapour pressure.
 #include "common/valve_description.h"
 #include "flow/simplec.h"
 
@@ -16,6 +21,12 @@
 
 namespace servodrift::flow
 {
+  enum class PilotGeometry
+  {
+    fixed_orifice, ///< meshes/fixed_orifice.geo
+    nozzle_flapper ///< meshes/nozzle_flapper.geo
+  };
+
   struct PilotFieldResult
   {
     double pressure_difference = 0;   ///< upstream stagnation minus downstream static [Pa]
@@ -24,62 +35,64 @@ namespace servodrift::flow
     double reynolds_number = 0;       ///< E17 (orifice) or E18 (nozzle) [1]
     double flapper_force = 0;         ///< nozzle: int (p - p_r) dA over the flapper, towards it [N]
     double land_force = 0;            ///< nozzle: int (p - p_r) dA over the land, away from the flapper [N]
-    double bore_pressure = 0;         ///< nozzle: mean pressure of the bore's exit section, minus p_r [Pa]
-    double minimum_pressure = 0;      ///< lowest pressure, relative to the outlet's [Pa]
-    unsigned int iterations = 0;
+    /// nozzle: axial momentum through the bore's exit plane, int (p - p_r + rho u_x^2) dA [N]; C12 (1)
+    /// equates it with flapper_force - land_force
+    double jet_force = 0;
+    double bore_pressure = 0;             ///< nozzle: mean pressure of the bore's exit section, minus p_r [Pa]
+    double minimum_pressure = 0;          ///< lowest pressure, relative to the outlet's [Pa]
+    double minimum_absolute_pressure = 0; ///< the same, absolute (the downstream gauge pressure + ambient) [Pa]
+    bool cavitating = false;              ///< minimum_absolute_pressure below the vapour pressure (C12)
+    double max_wall_y_plus = 0;           ///< largest y+ of a wall-adjacent cell centre [1]
+    unsigned int iterations = 0;          ///< SIMPLEC iterations of this solve (start-up included)
+    FlowSolverParameters::Turbulence turbulence = FlowSolverParameters::Turbulence::laminar;
   };
 
-  /// Dimensions and fluid of one case, for the tests: the valve's at temperature T unless overridden.
+  /// Fluid, resolution and flow model of one case: the valve's at temperature T unless overridden.
   struct PilotFieldCase
   {
-    double temperature;        ///< [degC]
-    FluidProperties fluid;     ///< rho, mu at the temperature
-    double resolution;         ///< mesh resolution (multiplies every cell count)
+    double temperature;    ///< [degC]
+    FluidProperties fluid; ///< rho, mu at the temperature
+    double resolution;     ///< mesh resolution (multiplies every cell count)
+    FlowSolverParameters::Turbulence turbulence; ///< the flow model of this case
   };
 
-  class FixedOrificeField
-  {
-  public:
-    FixedOrificeField(const ValveDescription &valve, const PilotFieldCase &c);
-    ~FixedOrificeField();
-    /// Inlet total pressure dp above the outlet's static pressure [Pa], > 0.
-    PilotFieldResult solve(double pressure_difference);
-    /// Starts the next solve from another case's fields (same mesh topology: another temperature,
-    /// or a laminar solution under a turbulent case).
-    void initialize_from(const FixedOrificeField &other);
-    /// Where a case that fails writes its last fields (VTU); empty: nowhere.
-    void set_failure_output(const std::string &filename);
-    void write_vtu(const std::string &filename) const;
-    std::size_t n_cells() const;
-    double bore_radius() const; ///< r_0(T) [m]
-    const SimplecSolver &solver() const;
-    const FvMesh &mesh() const;
-
-  private:
-    struct Implementation;
-    std::unique_ptr<Implementation> impl;
-  };
-
-  class NozzleFlapperField
-  {
-  public:
-    NozzleFlapperField(const ValveDescription &valve, const PilotFieldCase &c, double gap);
-    ~NozzleFlapperField();
-    PilotFieldResult solve(double pressure_difference);
-    /// Starts the next solve from another gap's fields (same mesh topology).
-    void initialize_from(const NozzleFlapperField &other);
-    /// Where a case that fails writes its last fields (VTU); empty: nowhere.
-    void set_failure_output(const std::string &filename);
-    void write_vtu(const std::string &filename) const;
-    std::size_t n_cells() const;
-    const SimplecSolver &solver() const;
-    const FvMesh &mesh() const;
-
-  private:
-    struct Implementation;
-    std::unique_ptr<Implementation> impl;
-  };
-
-  /// The case at temperature T from the valve description: the oil's rho(T), mu(T), the field resolution.
+  /// The case at temperature T from the valve description: the oil's rho(T), mu(T), the field
+  /// resolution and the valve's flow solver model (the stage chooses per case, pilot_field_sweep).
   PilotFieldCase pilot_field_case(const ValveDescription &valve, double T);
+
+  class PilotField
+  {
+  public:
+    /// The fixed orifice (gap ignored) or the nozzle-flapper case at `gap' > 0 [m].
+    PilotField(const ValveDescription &valve, PilotGeometry geometry, const PilotFieldCase &c, double gap = 0);
+    ~PilotField();
+    PilotField(PilotField &&) noexcept;
+
+    /// Inlet total pressure dp above the outlet's static pressure [Pa], > 0 (InputError otherwise).
+    /// Throws NotConverged (fields left as they are) or std::runtime_error (diverged).
+    PilotFieldResult solve(double pressure_difference);
+    /// Starts the next solve from another case's fields (same mesh topology: another temperature
+    /// or gap, or another flow model).
+    void initialize_from(const PilotField &other);
+    FlowFields fields() const;
+    void set_fields(const FlowFields &fields);
+    bool at_rest() const; ///< nothing solved or given yet: the next solve starts up laminar
+
+    /// Where a case that fails writes its last fields (VTU); empty: nowhere.
+    void set_failure_output(const std::string &filename);
+    void write_vtu(const std::string &filename) const;
+    std::size_t n_cells() const;
+    PilotGeometry geometry() const;
+    double gap() const;              ///< nozzle-flapper gap h [m]
+    double bore_radius() const;      ///< r_0(T) (orifice) or D_N(T)/2 (nozzle) [m]
+    /// Ideal-velocity Reynolds number of a pressure difference: 2 r_0 sqrt(2 dp/rho)/nu (orifice,
+    /// E17) or 2 h sqrt(2 dp/rho)/nu (nozzle: E18 with C_dn = 1 and D_h = 2h).
+    double ideal_reynolds_number(double pressure_difference) const;
+    const SimplecSolver &solver() const;
+    const FvMesh &mesh() const;
+
+  private:
+    struct Implementation;
+    std::unique_ptr<Implementation> impl;
+  };
 } // namespace servodrift::flow

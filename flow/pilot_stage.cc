@@ -3,6 +3,7 @@
 #include "common/stage_output.h"
 #include "common/sweep.h"
 #include "flow/pilot_closed_forms.h"
+#include "flow/pilot_field_stage.h"
 
 namespace servodrift::flow
 {
@@ -20,6 +21,8 @@ namespace servodrift::flow
 
   Table compute_fixed_orifice_table(const ValveDescription &valve)
   {
+    if (valve.pilot.model_level == "field")
+      return compute_fixed_orifice_field_table(valve);
     const auto &T = valve.sweeps.table_temperatures;
     const auto dp = pressure_differences(valve);
     Table table(schemas::fixed_orifice);
@@ -42,6 +45,8 @@ namespace servodrift::flow
 
   Table compute_nozzle_flapper_table(const ValveDescription &valve)
   {
+    if (valve.pilot.model_level == "field")
+      return compute_nozzle_flapper_field_table(valve);
     const auto &T = valve.sweeps.table_temperatures;
     const auto dp = pressure_differences(valve);
     std::vector<double> gaps;

@@ -171,6 +171,9 @@ namespace servodrift::flow
     // equations; the two-layer model needs each cell's distance to the nearest wall
     std::vector<double> wall_distance;
     void compute_wall_distance();
+    std::function<std::vector<double>()> monitor;
+    unsigned int monitor_window = 50;
+    double monitor_change = 1e-4;
     void update_face_viscosity();
     void turbulence_step(Residuals &r);
     void solve_momentum(SparseMatrix &A, Eigen::VectorXd &b, std::vector<double> &phi,
@@ -1026,6 +1029,22 @@ namespace servodrift::flow
     auto &d = *impl;
     SolveReport report;
     const double tolerance = d.settings.tolerance;
+    std::vector<std::vector<double>> history; // the monitored quantities of the last window + 1 iterations
+    auto monitors_settled = [&] {
+      if (!d.monitor)
+        return true;
+      history.push_back(d.monitor());
+      if (history.size() > d.monitor_window + 1)
+        history.erase(history.begin());
+      if (history.size() < d.monitor_window + 1)
+        return false;
+      const auto &now = history.back();
+      for (const auto &then : history)
+        for (std::size_t j = 0; j < now.size(); ++j)
+          if (std::abs(then[j] - now[j]) > d.monitor_change * std::abs(now[j]))
+            return false;
+      return true;
+    };
     for (unsigned int it = 1;; ++it)
       {
         Residuals r;
@@ -1066,17 +1085,19 @@ namespace servodrift::flow
               std::fprintf(stderr, "  iteration %u: residuals u %.3e, v %.3e, continuity %.3e\n", it, r.u, r.v,
                            r.continuity);
           }
-        if (r.u < tolerance && r.v < tolerance && r.continuity < tolerance && r.k < tolerance && r.epsilon < tolerance)
+        const bool settled = monitors_settled(); // every iteration, to keep the history
+        if (r.u < tolerance && r.v < tolerance && r.continuity < tolerance && r.k < tolerance && r.epsilon < tolerance &&
+            settled)
           break;
         if (it >= d.settings.max_iterations)
           {
             if (!failure_output.empty())
               write_vtu(failure_output);
-            throw std::runtime_error("flow: " + d.mesh.source + ": not converged in " + std::to_string(it) +
+            throw NotConverged("flow: " + d.mesh.source + ": not converged in " + std::to_string(it) +
                                      " iterations (residuals u " + format_number(r.u) + ", v " + format_number(r.v) +
                                      (d.turbulent ? ", k " + format_number(r.k) + ", epsilon " + format_number(r.epsilon) : "") +
                                      ", continuity " + format_number(r.continuity) + "; tolerance " +
-                                     format_number(tolerance) + ")");
+                                     format_number(tolerance) + (settled ? "" : "; monitored quantities still changing") + ")");
           }
       }
     d.update_boundary_values();
@@ -1125,28 +1146,82 @@ namespace servodrift::flow
     d.update_boundary_values();
   }
 
-  void SimplecSolver::initialize_from(const SimplecSolver &other)
+  FlowFields SimplecSolver::fields() const
+  {
+    const auto &d = *impl;
+    FlowFields f;
+    f.u = d.u, f.v = d.v, f.p = d.p, f.flux = d.flux;
+    f.turbulent = d.turbulent;
+    if (d.turbulent)
+      f.k = d.k, f.epsilon = d.epsilon, f.turbulent_viscosity = d.mu_t;
+    f.face_area = d.mesh.face_area;
+    f.density = d.fluid.density;
+    for (std::size_t k = 0; k < d.patch_condition.size(); ++k)
+      if (is_pressure_boundary(d.patch_condition[k].kind))
+        f.boundary_pressures.emplace_back(d.mesh.patch_names[k], d.patch_condition[k].pressure);
+    return f;
+  }
+
+  void SimplecSolver::set_fields(const FlowFields &o)
   {
     auto &d = *impl;
-    const auto &o = *other.impl;
-    if (o.mesh.n_cells() != d.mesh.n_cells() || o.mesh.n_faces() != d.mesh.n_faces())
+    if (o.u.size() != d.mesh.n_cells() || o.flux.size() != d.mesh.n_faces())
       throw std::invalid_argument("flow: " + d.mesh.source + ": cannot start from the fields of a different mesh");
     d.u = o.u, d.v = o.v, d.p = o.p;
-    for (std::size_t k = 0; k < d.patch_condition.size(); ++k)
-      if (is_pressure_boundary(d.patch_condition[k].kind) && k < o.patch_condition.size() &&
-          o.mesh.patch_names[k] == d.mesh.patch_names[k])
-        d.patch_condition[k].pressure = o.patch_condition[k].pressure;
-    if (d.turbulent && o.turbulent)
+    for (const auto &[name, pressure] : o.boundary_pressures)
       {
-        d.k = o.k, d.epsilon = o.epsilon, d.mu_t = o.mu_t;
+        const int k = d.mesh.patch_index(name);
+        if (k >= 0 && is_pressure_boundary(d.patch_condition[k].kind))
+          d.patch_condition[k].pressure = pressure;
+      }
+    if (d.turbulent)
+      {
+        if (o.turbulent)
+          d.k = o.k, d.epsilon = o.epsilon, d.mu_t = o.turbulent_viscosity;
+        else // from laminar fields: the turbulence model seeds itself (turbulence_step)
+          std::fill(d.k.begin(), d.k.end(), 0.0), std::fill(d.epsilon.begin(), d.epsilon.end(), 0.0),
+            std::fill(d.mu_t.begin(), d.mu_t.end(), 0.0);
         d.update_face_viscosity();
       }
     // the face fluxes scale with the face areas of this mesh (same topology, other dimensions)
     for (std::size_t f = 0; f < d.mesh.n_faces(); ++f)
       if (d.face_kind[f] != Kind::velocity_inlet || d.mesh.neighbour[f] >= 0)
-        d.flux[f] = o.flux[f] * d.mesh.face_area[f] / o.mesh.face_area[f] * d.fluid.density / o.fluid.density;
-    d.grad_p = d.mesh.gradient(d.p, o.p_b);
+        d.flux[f] = o.flux[f] * d.mesh.face_area[f] / o.face_area[f] * d.fluid.density / o.density;
+    for (std::size_t f = 0; f < d.mesh.n_faces(); ++f)
+      if (d.mesh.neighbour[f] < 0 && is_pressure_boundary(d.face_kind[f]))
+        d.inflow_speed[f] = std::min(d.flux[f], 0.0) / (d.fluid.density * d.mesh.face_area[f]);
     d.update_boundary_values();
+    d.grad_p = d.mesh.gradient(d.p, d.p_b);
+    d.update_boundary_values();
+  }
+
+  void SimplecSolver::initialize_from(const SimplecSolver &other) { set_fields(other.fields()); }
+
+  void SimplecSolver::set_convergence_monitor(std::function<std::vector<double>()> monitor, unsigned int window,
+                                              double relative_change)
+  {
+    impl->monitor = std::move(monitor);
+    impl->monitor_window = std::max(1u, window);
+    impl->monitor_change = relative_change;
+  }
+
+  std::vector<double> SimplecSolver::wall_y_plus() const
+  {
+    const auto &d = *impl;
+    std::vector<double> y_plus(d.mesh.n_cells(), 0.0);
+    const double rho = d.fluid.density, mu = d.fluid.viscosity;
+    for (std::size_t f = 0; f < d.mesh.n_faces(); ++f)
+      if (d.mesh.neighbour[f] < 0 && d.face_kind[f] == Kind::wall)
+        {
+          const unsigned int P = d.mesh.owner[f];
+          const Vector2 &n = d.mesh.face_normal[f];
+          Vector2 relative = Vector2(d.u[P], d.v[P]) - d.prescribed_velocity[f];
+          relative -= relative.dot(n) * n; // tangential
+          const double distance = d.distance_to_face(f);
+          const double tau = mu * relative.norm() / distance;
+          y_plus[P] = std::max(y_plus[P], std::sqrt(tau * rho) * distance / mu);
+        }
+    return y_plus;
   }
 
   const std::vector<double> &SimplecSolver::velocity_x() const { return impl->u; }
@@ -1262,8 +1337,8 @@ namespace servodrift::flow
     const auto &d = *impl;
     if (d.turbulent)
       write_fv_vtu(filename, d.mesh, d.p, d.u, d.v, d.p_b, d.u_b, d.v_b,
-                   {{"k", d.k}, {"epsilon", d.epsilon}, {"turbulent_viscosity", d.mu_t}});
+                   {{"y_plus", wall_y_plus()}, {"k", d.k}, {"epsilon", d.epsilon}, {"turbulent_viscosity", d.mu_t}});
     else
-      write_fv_vtu(filename, d.mesh, d.p, d.u, d.v, d.p_b, d.u_b, d.v_b);
+      write_fv_vtu(filename, d.mesh, d.p, d.u, d.v, d.p_b, d.u_b, d.v_b, {{"y_plus", wall_y_plus()}});
   }
 } // namespace servodrift::flow

@@ -16,6 +16,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace servodrift::flow
@@ -65,6 +66,23 @@ namespace servodrift::flow
     Residuals residuals;
   };
 
+  /// The iteration limit was reached (the fields are usable as a start, not as a result).
+  class NotConverged : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /// The solution fields, for continuation: what a solver can start from.
+  struct FlowFields
+  {
+    std::vector<double> u, v, p, flux, k, epsilon, turbulent_viscosity;
+    std::vector<double> face_area;                 ///< of the mesh they were computed on
+    double density = 0;                            ///< of the fluid they were computed with
+    std::vector<std::pair<std::string, double>> boundary_pressures; ///< pressure patches
+    bool turbulent = false;
+  };
+
   class SimplecSolver
   {
   public:
@@ -90,15 +108,30 @@ namespace servodrift::flow
     /// template with other dimensions). Throws std::invalid_argument if the cell counts differ.
     void initialize_from(const SimplecSolver &other);
 
-    /// Iterates until the scaled residuals fall below the tolerance. Throws std::runtime_error if
-    /// the iteration limit is reached, or at a NaN or divergence (naming the iteration; with
-    /// `failure_output' set, the fields are written there as VTU first).
+    /// The fields as they are, and a start from fields of a mesh of the same topology (see
+    /// initialize_from).
+    FlowFields fields() const;
+    void set_fields(const FlowFields &fields);
+
+    /// Quantities whose change decides convergence with the residuals (a flow rate, a force): the
+    /// run converges only when, in addition, none changed by more than `relative_change' of its
+    /// magnitude over the last `window' iterations.
+    void set_convergence_monitor(std::function<std::vector<double>()> monitor, unsigned int window = 50,
+                                 double relative_change = 1e-4);
+
+    /// Iterates until the scaled residuals fall below the tolerance (and the monitored quantities
+    /// settle). Throws NotConverged if the iteration limit is reached, std::runtime_error at a NaN
+    /// or divergence (naming the iteration; with `failure_output' set, the fields are written there
+    /// as VTU first).
     SolveReport solve();
     std::string failure_output;
 
     const std::vector<double> &velocity_x() const;
     const std::vector<double> &velocity_y() const;
     const std::vector<double> &pressure() const;
+    /// y+ of the first cell centre at a wall, rho u_tau d/mu with the wall shear mu |u_t|/d of the
+    /// resolved sublayer, per cell (the largest over its wall faces; 0 away from walls).
+    std::vector<double> wall_y_plus() const;
     /// Turbulent viscosity mu_t per cell [Pa*s] (zeros if laminar).
     const std::vector<double> &turbulent_viscosity() const;
     /// Mass flux rho u.S through each face, out of the owner [kg/s, per radian if axisymmetric].
@@ -125,8 +158,8 @@ namespace servodrift::flow
     double net_imbalance() const;
     double throughput() const; ///< inflow mass flux [kg/s per radian or per unit depth]
 
-    /// Pressure, velocity, cell id and, on boundary line cells, the boundary id, as VTU (VTK library);
-    /// with k-epsilon also k, epsilon~ and mu_t.
+    /// Pressure, velocity, cell id, y+ and, on boundary line cells, the boundary id, as VTU (VTK
+    /// library); with k-epsilon also k, epsilon (epsilon~ for Launder-Sharma) and mu_t.
     void write_vtu(const std::string &filename) const;
 
   private:

@@ -24,13 +24,19 @@ namespace servodrift
                       "Linear solver of the momentum equations: BiCGSTAB with a Jacobi or an incomplete-LU "
                       "preconditioner (Eigen), or UMFPACK LU with its symbolic analysis once per mesh "
                       "(SuiteSparse); bench/bench_flow measures them. [-]");
-    prm.declare_entry("Tolerance", "1e-8", Patterns::Double(1e-15, 1),
+    prm.declare_entry("Tolerance", "1e-6", Patterns::Double(1e-15, 1),
                       "The run converges when the scaled residuals of both momentum equations and of "
                       "continuity fall below this. [1]");
     prm.declare_entry("Maximum iterations", "5000", Patterns::Integer(1, 10000000),
                       "SIMPLEC iterations; a run that has not converged by then fails. [1]");
     prm.declare_entry("Report interval", "0", Patterns::Integer(0, 10000000),
                       "Print the residuals every this many iterations on stderr (0: only at the end). [1]");
+    prm.declare_entry("Monitor iterations", "50", Patterns::Integer(1, 100000),
+                      "Where a stage monitors results (the pilot stage: the flow rate and the flapper "
+                      "force), a run converges only when they also changed by less than the monitor "
+                      "tolerance over this many iterations. [1]");
+    prm.declare_entry("Monitor tolerance", "1e-4", Patterns::Double(1e-14, 1),
+                      "Largest relative change of a monitored result over the monitor iterations. [1]");
     prm.declare_entry("Turbulence model", "laminar",
                       Patterns::Selection("laminar|k-epsilon|k-epsilon-launder-sharma"),
                       "laminar; k-epsilon: the standard model (C_mu 0.09, C1 1.44, C2 1.92, sigma_k 1.0, "
@@ -67,6 +73,8 @@ namespace servodrift
     tolerance = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Maximum iterations");
     report_interval = prm.get_integer("Report interval");
+    monitor_iterations = prm.get_integer("Monitor iterations");
+    monitor_tolerance = prm.get_double("Monitor tolerance");
     const std::string t = prm.get("Turbulence model");
     turbulence = t == "k-epsilon"                 ? Turbulence::k_epsilon :
                  t == "k-epsilon-launder-sharma" ? Turbulence::k_epsilon_launder_sharma :

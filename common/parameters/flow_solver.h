@@ -17,6 +17,8 @@ namespace servodrift
     double tolerance;               ///< scaled residuals of momentum and continuity [1]
     unsigned int max_iterations;    ///< SIMPLEC iterations before the run fails
     unsigned int report_interval;   ///< print the residuals every n iterations (0: never)
+    unsigned int monitor_iterations; ///< window over which monitored quantities must settle [1]
+    double monitor_tolerance;       ///< their largest relative change over that window [1]
     enum class Turbulence { laminar, k_epsilon, k_epsilon_launder_sharma };
     Turbulence turbulence;          ///< laminar; standard k-epsilon, two-layer; Launder-Sharma k-epsilon
     double turbulence_relaxation;   ///< under-relaxation of the k and epsilon equations [1]

@@ -21,6 +21,10 @@ namespace servodrift
     prm.declare_entry("Rated current", "0.020", Patterns::Double(0, 10),
                       "Rated differential coil current (D7); the output-pressure drift is evaluated at "
                       "this current (D9). [A]");
+    prm.declare_entry("Ambient pressure", "101325", Patterns::Double(0, 1e7),
+                      "Absolute pressure of gauge zero: the supply and return pressures are gauge, and "
+                      "the field-level flow cases compare their lowest absolute pressure with the "
+                      "vapour pressure (C12). [Pa]");
     prm.leave_subsection();
   }
 
@@ -28,6 +32,7 @@ namespace servodrift
   {
     prm.enter_subsection(subsection);
     supply_pressure = prm.get_double("Supply pressure");
+    ambient_pressure = prm.get_double("Ambient pressure");
     return_pressure = prm.get_double("Return pressure");
     reference_temperature = prm.get_double("Reference temperature");
     rated_current = prm.get_double("Rated current");

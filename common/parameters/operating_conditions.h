@@ -11,6 +11,7 @@ namespace servodrift
     double return_pressure;       ///< p_r, gauge [Pa]
     double reference_temperature; ///< T0, at which the valve is built and nulled [degC]
     double rated_current;         ///< rated differential coil current [A]
+    double ambient_pressure;      ///< absolute pressure of gauge zero, for cavitation checks [Pa]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(dealii::ParameterHandler &prm);

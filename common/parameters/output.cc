@@ -31,6 +31,10 @@ namespace servodrift
                       "current density) with a .pvd collection under magnetics/: a comma-separated list "
                       "of `temperature angle current' triples in degC, deg and A that are points of the "
                       "sweep, or `all', or `none'. [-]");
+    prm.declare_entry("Flow fields", "reference", Patterns::Selection("reference|all|none"),
+                      "Field-level flow cases written as VTU files (p, velocity, k, epsilon, mu_t, y+) with "
+                      ".pvd collections under flow/: those at the table temperature nearest the reference "
+                      "temperature (a few MB each), all, or none. [-]");
     prm.leave_subsection();
   }
 
@@ -42,6 +46,8 @@ namespace servodrift
     plot_formats = dealii::Utilities::split_string_list(prm.get("Plot formats"));
     const std::string p = prm.get("Progress");
     progress = p == "auto" ? Progress::automatic : p == "lines" ? Progress::lines : Progress::none;
+    const std::string flow = prm.get("Flow fields");
+    flow_fields = flow == "all" ? FlowFields::all : flow == "none" ? FlowFields::none : FlowFields::reference;
     const std::string fields = dealii::Utilities::trim(prm.get("Magnetics fields"));
     all_magnetics_fields = fields == "all";
     magnetics_field_cases.clear();

@@ -20,6 +20,9 @@ namespace servodrift
     /// current [A]) of the torque-motor sweep; `all_field_cases' writes every case.
     std::vector<std::array<double, 3>> magnetics_field_cases;
     bool all_magnetics_fields;
+    /// Field-level flow cases written as VTU under flow/: those at the reference temperature, all, none
+    enum class FlowFields { reference, all, none };
+    FlowFields flow_fields;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(dealii::ParameterHandler &prm);

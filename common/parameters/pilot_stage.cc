@@ -9,9 +9,10 @@ namespace servodrift
   void PilotStageParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection(subsection);
-    prm.declare_entry("Model level", "reduced-order", Patterns::Selection("reduced-order"),
-                      "Which model computes the fixed_orifice and nozzle_flapper tables: "
-                      "'reduced-order' is E21-E23 (D13). [-]");
+    prm.declare_entry("Model level", "reduced-order", Patterns::Selection("reduced-order|field"),
+                      "Which model computes the fixed_orifice and nozzle_flapper tables (D13): "
+                      "'reduced-order' is E21-E23; 'field' is the axisymmetric finite-volume solution of "
+                      "meshes/fixed_orifice.geo and meshes/nozzle_flapper.geo (4.2, D11). [-]");
     prm.declare_entry("Fixed orifice diameter", "0.225e-3", Patterns::Double(0, 0.1),
                       "Bore diameter D_0 of each fixed (inlet) orifice (E17, E31). [m]");
     prm.declare_entry("Fixed orifice length", "0.50e-3", Patterns::Double(0, 0.1),
@@ -41,10 +42,28 @@ namespace servodrift
                       "radii D_0/2. [1]");
     prm.declare_entry("Field chamber length", "20", Patterns::Double(4, 1000),
                       "Field level: length of the fixed orifice's downstream chamber (radius 8 bore "
-                      "radii), in bore radii D_0/2; the outlet is at its end. [1]");
+                      "radii), in bore radii D_0/2; the chamber ends in a wall and the outlet is its "
+                      "side. [1]");
     prm.declare_entry("Field outlet radius", "4", Patterns::Double(1.5, 100),
                       "Field level: radius of the nozzle-flapper case's radial outlet (return "
                       "pressure), in land radii D_land/2. [1]");
+    const char *models = "automatic|laminar|k-epsilon|k-epsilon-launder-sharma";
+    prm.declare_entry("Fixed orifice flow model", "automatic", Patterns::Selection(models),
+                      "Field level: flow model of the fixed-orifice cases (D11): laminar, k-epsilon (the "
+                      "two-layer standard model of `Flow solver/Turbulence model'), "
+                      "k-epsilon-launder-sharma, or automatic: laminar below the fixed orifice transition "
+                      "Reynolds number (E17, ideal velocity), k-epsilon from it. [-]");
+    prm.declare_entry("Fixed orifice transition Reynolds number", "1000", Patterns::Double(0, 1e9),
+                      "Field level, automatic flow model: Re_0 (E17) from which the fixed orifice runs "
+                      "k-epsilon. Below about 1000 the laminar solution is steady and follows "
+                      "Lichtarowicz (E21); above, it stops converging (the jet is unsteady) while the "
+                      "two-layer model still gives the laminar C_d at 1000-1400 (doc/validation.md). [1]");
+    prm.declare_entry("Nozzle flow model", "automatic", Patterns::Selection(models),
+                      "Field level: flow model of the nozzle-flapper cases (D11), as for the fixed "
+                      "orifice; automatic switches at the nozzle transition Reynolds number. [-]");
+    prm.declare_entry("Nozzle transition Reynolds number", "2000", Patterns::Double(0, 1e9),
+                      "Field level, automatic flow model: the ideal-velocity gap Reynolds number 2 h "
+                      "sqrt(2 dp/rho)/nu from which the nozzle-flapper case runs k-epsilon. [1]");
     prm.declare_entry("Fixed orifice law", "lichtarowicz", Patterns::Selection("lichtarowicz|paper-fit"),
                       "Reduced-order fixed-orifice discharge coefficient: lichtarowicz (E21, RV-1) or "
                       "paper-fit (the paper's cubic E26 in Re_0, clamped to its window Re_0 in "
@@ -77,6 +96,17 @@ namespace servodrift
     field_plenum_size = prm.get_double("Field plenum size");
     field_chamber_length = prm.get_double("Field chamber length");
     field_outlet_radius = prm.get_double("Field outlet radius");
+    auto model_of = [&](const char *entry) {
+      const std::string m = prm.get(entry);
+      return m == "laminar"                  ? FlowModel::laminar :
+             m == "k-epsilon"                ? FlowModel::k_epsilon :
+             m == "k-epsilon-launder-sharma" ? FlowModel::k_epsilon_launder_sharma :
+                                               FlowModel::automatic;
+    };
+    fixed_orifice_flow_model = model_of("Fixed orifice flow model");
+    fixed_orifice_transition_reynolds = prm.get_double("Fixed orifice transition Reynolds number");
+    nozzle_flow_model = model_of("Nozzle flow model");
+    nozzle_transition_reynolds = prm.get_double("Nozzle transition Reynolds number");
     fixed_orifice_law =
       prm.get("Fixed orifice law") == "paper-fit" ? OrificeLaw::paper_fit : OrificeLaw::lichtarowicz;
     nozzle_law = prm.get("Nozzle law") == "paper-fit" ? NozzleLaw::paper_fit : NozzleLaw::curtain;

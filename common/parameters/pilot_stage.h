@@ -9,7 +9,7 @@ namespace servodrift
   struct PilotStageParameters
   {
     static constexpr const char *subsection = "Pilot stage";
-    std::string model_level;        ///< "reduced-order" (E21-E23)
+    std::string model_level;        ///< "reduced-order" (E21-E23) or "field" (finite volumes, 4.2)
     double fixed_orifice_diameter;  ///< D_0 [m]
     double fixed_orifice_length;    ///< l_0 [m]
     double nozzle_diameter;         ///< D_N [m]
@@ -28,6 +28,13 @@ namespace servodrift
     double field_plenum_size;       ///< orifice plenum radius and length / bore radius [1]
     double field_chamber_length;    ///< orifice downstream chamber length / bore radius [1]
     double field_outlet_radius;     ///< nozzle-flapper outlet radius / land radius [1]
+    /// flow model of a field case: automatic picks laminar below the transition Reynolds number
+    /// (ideal velocity: E17 for the orifice, 2h sqrt(2 dp/rho)/nu for the nozzle) and k-epsilon above
+    enum class FlowModel { automatic, laminar, k_epsilon, k_epsilon_launder_sharma };
+    FlowModel fixed_orifice_flow_model;
+    double fixed_orifice_transition_reynolds; ///< [1]
+    FlowModel nozzle_flow_model;
+    double nozzle_transition_reynolds;        ///< [1]
 
     OrificeLaw fixed_orifice_law;
     NozzleLaw nozzle_law;

@@ -39,6 +39,19 @@ namespace servodrift
                       "Nozzle-flapper gaps of the nozzle_flapper table as fractions of the null gap x0 "
                       "at T0, strictly increasing; 0 to 2 x0(T)/x0 covers the flapper's travel "
                       "between the nozzles. [1]");
+    prm.declare_entry("Field orifice pressure fractions", "0.05, 0.25, 0.5, 0.75, 1", double_list(0, 1, 1),
+                      "Field level: pressure differences of the fixed_orifice table's computed rows as "
+                      "fractions of p_s - p_r, strictly increasing (the table adds dp = 0, where Q = 0). "
+                      "[1]");
+    prm.declare_entry("Field gap fractions", "0.25, 0.5, 0.75, 1, 1.25, 1.5, 1.75", double_list(0, 10, 1),
+                      "Field level: nozzle-flapper gaps of the nozzle_flapper table's computed rows as "
+                      "fractions of x0 at T0, strictly increasing and > 0 (the table adds the closed "
+                      "gap). The default is x0 -+ x_f for x_f = 0, 10, 20, 30 um (issue 5); the drift "
+                      "map's flapper travel must stay inside. [1]");
+    prm.declare_entry("Field nozzle pressure fractions", "0.15, 0.5, 1", double_list(0, 1, 1),
+                      "Field level: nozzle pressure differences p_c - p_r of the nozzle_flapper table's "
+                      "computed rows as fractions of p_s - p_r, strictly increasing (the table adds dp = "
+                      "0); the bridge needs up to 1. [1]");
     prm.declare_entry("Drift temperatures",
                       "40, 45, 50, 55, 60, 65, 70, 75, 80, 85, 90, 95, 100, 105, 110, 115, 120",
                       double_list(-273.15, 1000, 2),
@@ -63,6 +76,9 @@ namespace servodrift
     motor_currents = get_double_list(prm, "Motor currents");
     pressure_fractions = get_double_list(prm, "Pressure fractions");
     gap_fractions = get_double_list(prm, "Gap fractions");
+    field_orifice_pressure_fractions = get_double_list(prm, "Field orifice pressure fractions");
+    field_gap_fractions = get_double_list(prm, "Field gap fractions");
+    field_nozzle_pressure_fractions = get_double_list(prm, "Field nozzle pressure fractions");
     drift_temperatures = get_double_list(prm, "Drift temperatures");
     deviation_angles = get_double_list(prm, "Deviation angles");
     for (double &a : deviation_angles)

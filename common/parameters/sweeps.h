@@ -14,6 +14,9 @@ namespace servodrift
     std::vector<double> motor_currents;       ///< coil currents of the torque_motor table [A]
     std::vector<double> pressure_fractions;   ///< pressure differences / (p_s - p_r) [1]
     std::vector<double> gap_fractions;        ///< nozzle-flapper gaps / x0 [1]
+    std::vector<double> field_orifice_pressure_fractions; ///< field level: orifice dp / (p_s - p_r) [1]
+    std::vector<double> field_gap_fractions;              ///< field level: gaps / x0 [1]
+    std::vector<double> field_nozzle_pressure_fractions;  ///< field level: nozzle dp / (p_s - p_r) [1]
     std::vector<double> drift_temperatures;   ///< temperature axis of the drift map [degC]
     std::vector<double> deviation_angles;     ///< deviation angles theta_d of the drift map [rad]
 

@@ -55,10 +55,10 @@ namespace servodrift::flow
   {
     const ValveDescription v = laminar_valve();
     const PilotFieldCase c = pilot_field_case(v, 40);
-    const FixedOrificeField orifice(v, c);
+    const PilotField orifice(v, PilotGeometry::fixed_orifice, c);
     const double r0 = orifice.bore_radius(), l = 0.5e-3;
     const std::size_t across_bore = cells_across(orifice.mesh(), Vector2(0.5 * l, 0), Vector2(0.5 * l, r0));
-    const NozzleFlapperField nozzle(v, c, 40e-6);
+    const PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, 40e-6);
     const std::size_t across_gap = cells_across(nozzle.mesh(), Vector2(0, 0.27e-3), Vector2(40e-6, 0.27e-3));
     std::printf("orifice %zu cells, %zu across the bore radius; nozzle %zu cells, %zu across the gap\n",
                 orifice.n_cells(), across_bore, nozzle.n_cells(), across_gap);
@@ -72,7 +72,7 @@ namespace servodrift::flow
   {
     const ValveDescription v = laminar_valve();
     const PilotClosedForms closed_forms(v, 40);
-    FixedOrificeField orifice(v, pilot_field_case(v, 40));
+    PilotField orifice(v, PilotGeometry::fixed_orifice, pilot_field_case(v, 40));
     for (double dp : {20e3, 100e3, 400e3}) // Re_0 = 110, 247, 493; continuation from one to the next
       {
         const PilotFieldResult r = orifice.solve(dp);
@@ -94,10 +94,10 @@ namespace servodrift::flow
     const double A_N = units::pi * std::pow(closed_forms.geometry().nozzle_diameter, 2) / 4;
     const double dp = 0.1e6; // Re_n = 36: laminar
     std::vector<double> force;
-    std::unique_ptr<NozzleFlapperField> previous;
+    std::unique_ptr<PilotField> previous;
     for (double gap : {30e-6, 40e-6, 50e-6})
       {
-        auto nozzle = std::make_unique<NozzleFlapperField>(v, c, gap);
+        auto nozzle = std::make_unique<PilotField>(v, PilotGeometry::nozzle_flapper, c, gap);
         if (previous)
           nozzle->initialize_from(*previous); // continuation over the gap
         const PilotFieldResult r = nozzle->solve(dp);
@@ -126,8 +126,8 @@ namespace servodrift::flow
   {
     const ValveDescription v = laminar_valve();
     const PilotFieldCase c = pilot_field_case(v, 40);
-    EXPECT_THROW(NozzleFlapperField(v, c, 0.0), InputError);
-    FixedOrificeField orifice(v, c);
+    EXPECT_THROW(PilotField(v, PilotGeometry::nozzle_flapper, c, 0.0), InputError);
+    PilotField orifice(v, PilotGeometry::fixed_orifice, c);
     EXPECT_THROW(orifice.solve(-1e5), InputError);
     EXPECT_THROW(orifice.solve(0), InputError);
   }

@@ -1,0 +1,415 @@
+#include "flow/pilot_field_stage.h"
+
+#include "common/csv.h"
+#include "common/error.h"
+#include "common/output_files.h"
+#include "common/stage_output.h"
+#include "common/sweep.h"
+#include "common/units.h"
+#include "common/version.h"
+#include "flow/pilot_closed_forms.h"
+#include "flow/pilot_field.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+
+namespace servodrift::flow
+{
+  namespace
+  {
+    using Turbulence = FlowSolverParameters::Turbulence;
+    using FlowModel = PilotStageParameters::FlowModel;
+
+    /// One computed case: the record every chain returns, from which the table and
+    /// flow/field_cases.csv are built.
+    enum Field : std::size_t
+    {
+      geometry,
+      temperature,
+      gap,
+      pressure_difference,
+      flow_rate,
+      discharge_coefficient,
+      reynolds_number,
+      flapper_force,
+      land_force,
+      jet_force,
+      bore_pressure,
+      minimum_absolute_pressure,
+      cavitating,
+      max_wall_y_plus,
+      iterations,
+      model,
+      flag,
+      reduced_discharge_coefficient,
+      reduced_flapper_force,
+      wall_time,
+      record_length
+    };
+
+    double span(const ValveDescription &valve)
+    {
+      return valve.operating.supply_pressure - valve.operating.return_pressure;
+    }
+
+    std::vector<double> scaled(const std::vector<double> &fractions, double scale)
+    {
+      std::vector<double> v;
+      for (double f : fractions)
+        v.push_back(f * scale);
+      return v;
+    }
+
+    const char *model_name(Turbulence t)
+    {
+      switch (t)
+        {
+          case Turbulence::laminar: return "laminar";
+          case Turbulence::k_epsilon: return "k-epsilon";
+          case Turbulence::k_epsilon_launder_sharma: return "k-epsilon-launder-sharma";
+        }
+      return "?";
+    }
+
+    /// The flow model of a case (D11): fixed, or laminar below the transition Reynolds number.
+    Turbulence model_of_case(FlowModel m, double ideal_reynolds, double transition)
+    {
+      switch (m)
+        {
+          case FlowModel::laminar: return Turbulence::laminar;
+          case FlowModel::k_epsilon: return Turbulence::k_epsilon;
+          case FlowModel::k_epsilon_launder_sharma: return Turbulence::k_epsilon_launder_sharma;
+          case FlowModel::automatic: break;
+        }
+      return ideal_reynolds < transition ? Turbulence::laminar : Turbulence::k_epsilon;
+    }
+
+    /// The table temperature whose cases go to VTU with `Output/Flow fields = reference'.
+    double reference_table_temperature(const ValveDescription &valve)
+    {
+      double best = valve.sweeps.table_temperatures.front();
+      for (double T : valve.sweeps.table_temperatures)
+        if (std::abs(T - valve.operating.reference_temperature) < std::abs(best - valve.operating.reference_temperature))
+          best = T;
+      return best;
+    }
+
+    std::string flow_directory(const ValveDescription &valve) { return valve.output.directory + "/flow"; }
+
+    std::string vtu_name(PilotGeometry g, double T, double h, double dp)
+    {
+      char name[96];
+      if (g == PilotGeometry::fixed_orifice)
+        std::snprintf(name, sizeof name, "fixed_orifice_T%.1f_dp%.3fMPa.vtu", T, dp * 1e-6);
+      else
+        std::snprintf(name, sizeof name, "nozzle_flapper_T%.1f_h%.2fum_dp%.3fMPa.vtu", T, h * 1e6, dp * 1e-6);
+      return name;
+    }
+
+    bool writes_fields(const ValveDescription &valve, double T)
+    {
+      switch (valve.output.flow_fields)
+        {
+          case OutputParameters::FlowFields::all: return true;
+          case OutputParameters::FlowFields::none: return false;
+          case OutputParameters::FlowFields::reference: return T == reference_table_temperature(valve);
+        }
+      return false;
+    }
+
+    /// One continuation chain at a temperature: the cases of one geometry (and gap), created per
+    /// flow model as needed, each new one starting from the last converged fields.
+    class Chain
+    {
+    public:
+      Chain(const ValveDescription &valve_, PilotGeometry g, double T)
+        : valve(valve_)
+        , kind(g)
+        , conditions(pilot_field_case(valve_, T))
+        , closed_forms(valve_, T)
+      {}
+
+      /// Solves the case of gap h (nozzle) at dp with the model the valve description asks for,
+      /// from `start' if given (another gap's fields), else from the chain's last fields. Returns the
+      /// record; keeps the fields if it converged.
+      std::vector<double> solve(double h, double dp, const std::optional<FlowFields> &start = std::nullopt)
+      {
+        const auto begin = std::chrono::steady_clock::now();
+        const auto &pilot = valve.pilot;
+        const bool orifice = kind == PilotGeometry::fixed_orifice;
+        if (!orifice && h != current_gap)
+          cases.clear(), current_gap = h; // another mesh
+        // the model: by the ideal-velocity Reynolds number of this case
+        const double nu = conditions.fluid.viscosity / conditions.fluid.density;
+        const auto g = closed_forms.geometry();
+        const double length = orifice ? g.fixed_orifice_diameter : 2 * h;
+        const double ideal_Re = length * std::sqrt(2 * dp / conditions.fluid.density) / nu;
+        const Turbulence t = orifice ? model_of_case(pilot.fixed_orifice_flow_model, ideal_Re, pilot.fixed_orifice_transition_reynolds) :
+                                       model_of_case(pilot.nozzle_flow_model, ideal_Re, pilot.nozzle_transition_reynolds);
+        auto &slot = cases[t];
+        if (!slot)
+          {
+            PilotFieldCase c = conditions;
+            c.turbulence = t;
+            slot = std::make_unique<PilotField>(valve, kind, c, h);
+          }
+        if (start)
+          slot->set_fields(*start);
+        else if (last && last_model != t)
+          slot->set_fields(*last); // the chain switched model: continue from the other model's fields
+        const std::string vtu = flow_directory(valve) + "/" + vtu_name(kind, conditions.temperature, h, dp);
+        slot->set_failure_output(writes_fields(valve, conditions.temperature) ? vtu : "");
+
+        std::vector<double> record(record_length, 0.0);
+        record[geometry] = orifice ? 0 : 1;
+        record[temperature] = conditions.temperature;
+        record[gap] = h;
+        record[pressure_difference] = dp;
+        record[model] = double(t);
+        const OrificeState reduced = orifice ? closed_forms.fixed_orifice(dp) : closed_forms.nozzle(h, dp);
+        record[reduced_discharge_coefficient] = reduced.discharge_coefficient;
+        record[reduced_flapper_force] = reduced.flapper_force;
+        try
+          {
+            const PilotFieldResult r = slot->solve(dp);
+            record[flow_rate] = r.flow_rate;
+            record[discharge_coefficient] = r.discharge_coefficient;
+            record[reynolds_number] = r.reynolds_number;
+            record[flapper_force] = r.flapper_force;
+            record[land_force] = r.land_force;
+            record[jet_force] = r.jet_force;
+            record[bore_pressure] = r.bore_pressure;
+            record[minimum_absolute_pressure] = r.minimum_absolute_pressure;
+            record[cavitating] = r.cavitating ? 1 : 0;
+            record[max_wall_y_plus] = r.max_wall_y_plus;
+            record[iterations] = r.iterations;
+            record[flag] = flags::computed;
+            last = slot->fields();
+            last_model = t;
+            if (writes_fields(valve, conditions.temperature))
+              slot->write_vtu(vtu);
+          }
+        catch (const std::runtime_error &e) // NotConverged or diverged: flagged, the reduced order stands in
+          {
+            std::cerr << "servodrift: warning: " << (orifice ? "fixed orifice" : "nozzle-flapper") << " at "
+                      << format_number(conditions.temperature) << " degC"
+                      << (orifice ? "" : ", gap " + format_number(h * 1e6) + " um") << ", dp "
+                      << format_number(dp * 1e-6) << " MPa (" << model_name(t) << "): " << e.what()
+                      << "; its table row is flagged 2 and carries the reduced-order value\n";
+            record[flow_rate] = reduced.flow_rate;
+            record[discharge_coefficient] = reduced.discharge_coefficient;
+            record[reynolds_number] = reduced.reynolds_number;
+            record[flapper_force] = reduced.flapper_force;
+            record[flag] = flags::not_converged;
+            // the next case continues from the last converged fields, or starts up again
+            if (last)
+              slot->set_fields(*last);
+            else
+              slot.reset();
+          }
+        record[wall_time] = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+        return record;
+      }
+
+      const std::optional<FlowFields> &last_fields() const { return last; }
+
+    private:
+      const ValveDescription &valve;
+      PilotGeometry kind;
+      PilotFieldCase conditions;
+      PilotClosedForms closed_forms;
+      double current_gap = -1;
+      std::map<Turbulence, std::unique_ptr<PilotField>> cases;
+      std::optional<FlowFields> last;
+      Turbulence last_model = Turbulence::laminar;
+    };
+
+    CaseRows orifice_chain(const ValveDescription &valve, double T)
+    {
+      Chain chain(valve, PilotGeometry::fixed_orifice, T);
+      CaseRows records;
+      for (double dp : scaled(valve.sweeps.field_orifice_pressure_fractions, span(valve)))
+        records.push_back(chain.solve(0, dp));
+      return records;
+    }
+
+    /// The nozzle's gaps from the null gap outwards: x0, the smaller ones downwards, then the larger
+    /// ones upwards, each with the index of the gap it starts from (-1: none).
+    std::vector<std::pair<std::size_t, int>> gap_order(const std::vector<double> &fractions)
+    {
+      std::size_t middle = 0;
+      for (std::size_t k = 0; k < fractions.size(); ++k)
+        if (std::abs(fractions[k] - 1) < std::abs(fractions[middle] - 1))
+          middle = k;
+      std::vector<std::pair<std::size_t, int>> order{{middle, -1}};
+      for (std::size_t k = middle; k-- > 0;)
+        order.emplace_back(k, int(k + 1));
+      for (std::size_t k = middle + 1; k < fractions.size(); ++k)
+        order.emplace_back(k, int(k - 1));
+      return order;
+    }
+
+    CaseRows nozzle_chain(const ValveDescription &valve, double T)
+    {
+      Chain chain(valve, PilotGeometry::nozzle_flapper, T);
+      const auto gaps = scaled(valve.sweeps.field_gap_fractions, valve.pilot.null_gap);
+      const auto dps = scaled(valve.sweeps.field_nozzle_pressure_fractions, span(valve));
+      std::vector<std::optional<FlowFields>> first(gaps.size()); // each gap's fields at its first dp
+      std::vector<CaseRows> by_gap(gaps.size());
+      for (const auto &[k, from] : gap_order(valve.sweeps.field_gap_fractions))
+        for (std::size_t j = 0; j < dps.size(); ++j)
+          {
+            by_gap[k].push_back(chain.solve(gaps[k], dps[j], j == 0 && from >= 0 ? first[from] : std::nullopt));
+            if (j == 0)
+              first[k] = chain.last_fields();
+          }
+      CaseRows records; // in gap order
+      for (const auto &rows : by_gap)
+        records.insert(records.end(), rows.begin(), rows.end());
+      return records;
+    }
+
+    CaseRows run_chains(const ValveDescription &valve, PilotGeometry g)
+    {
+      const auto &T = valve.sweeps.table_temperatures;
+      on_rank_zero([&] { prepare_output_directory(flow_directory(valve)); });
+      const bool orifice = g == PilotGeometry::fixed_orifice;
+      return run_sweep(orifice ? "flow: fixed orifice (field)" : "flow: nozzle-flapper (field)", T.size(),
+                       [&](std::size_t k) { return orifice ? orifice_chain(valve, T[k]) : nozzle_chain(valve, T[k]); },
+                       valve.output.progress);
+    }
+
+    /// flow/<geometry>_cases.csv and the .pvd collection of the VTU files written (rank 0).
+    void write_case_summary(const ValveDescription &valve, PilotGeometry g, const CaseRows &records)
+    {
+      const bool orifice = g == PilotGeometry::fixed_orifice;
+      const std::string name = orifice ? "fixed_orifice" : "nozzle_flapper";
+      on_rank_zero([&] {
+        CsvDocument doc;
+        doc.comments = {"servodrift-output " + name + "_cases",
+                        "field-level " + std::string(orifice ? "fixed-orifice" : "nozzle-flapper") +
+                          " cases: results, diagnostics (model.md 4.2, C12) and the reduced-order values (E21-E23) "
+                          "beside them; flag 2 = not converged (the table carries the reduced-order value)",
+                        "producer " + producer_string("flow/field"), "parameters-sha256 " + valve.parameters_sha256};
+        doc.columns = {"temperature[degC]",
+                       "gap[m]",
+                       "pressure_difference[Pa]",
+                       "flow_model[-]",
+                       "flow_rate[m^3/s]",
+                       "discharge_coefficient[1]",
+                       "reduced_order_discharge_coefficient[1]",
+                       "reynolds_number[1]",
+                       "flapper_force[N]",
+                       "reduced_order_flapper_force[N]",
+                       "land_force[N]",
+                       "jet_force[N]",
+                       "bore_pressure[Pa]",
+                       "minimum_absolute_pressure[Pa]",
+                       "below_vapour_pressure[1]",
+                       "max_wall_y_plus[1]",
+                       "iterations[1]",
+                       "wall_time[s]",
+                       "flag[1]"};
+        std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+        int k = 0;
+        for (const auto &r : records)
+          {
+            const bool converged = r[flag] == flags::computed;
+            auto cell = [&](double v, bool defined = true) { return defined ? format_cell(v) : std::string(); };
+            doc.rows.push_back({cell(r[temperature]), cell(r[gap], !orifice), cell(r[pressure_difference]),
+                                model_name(Turbulence(int(r[model]))), cell(r[flow_rate]), cell(r[discharge_coefficient]),
+                                cell(r[reduced_discharge_coefficient]), cell(r[reynolds_number]),
+                                cell(r[flapper_force], !orifice), cell(r[reduced_flapper_force], !orifice),
+                                cell(r[land_force], !orifice && converged), cell(r[jet_force], !orifice && converged),
+                                cell(r[bore_pressure], !orifice && converged), cell(r[minimum_absolute_pressure], converged),
+                                cell(r[cavitating], converged), cell(r[max_wall_y_plus], converged),
+                                cell(r[iterations], converged), cell(r[wall_time]), cell(r[flag])});
+            if (converged && writes_fields(valve, r[temperature]))
+              pvd += "    <DataSet timestep=\"" + std::to_string(k++) + "\" part=\"0\" file=\"" +
+                     vtu_name(g, r[temperature], r[gap], r[pressure_difference]) + "\"/>\n";
+          }
+        pvd += "  </Collection>\n</VTKFile>\n";
+        write_file_atomically(flow_directory(valve) + "/" + name + "_cases.csv", doc.text());
+        if (k > 0)
+          write_file_atomically(flow_directory(valve) + "/" + name + ".pvd", pvd);
+      });
+    }
+
+    std::size_t count_flagged(const CaseRows &records, std::size_t column, double value)
+    {
+      std::size_t n = 0;
+      for (const auto &r : records)
+        n += r[column] == value;
+      return n;
+    }
+
+    void report_counts(const char *what, const CaseRows &records)
+    {
+      if (mpi_rank() != 0)
+        return;
+      const std::size_t failed = count_flagged(records, flag, flags::not_converged);
+      const std::size_t cavitating_cases = count_flagged(records, cavitating, 1);
+      if (failed > 0)
+        std::cerr << "servodrift: warning: " << failed << " of " << records.size() << " " << what
+                  << " cases did not converge (flag 2; see flow/*_cases.csv)\n";
+      if (cavitating_cases > 0)
+        std::cerr << "servodrift: note: " << cavitating_cases << " of " << records.size() << " " << what
+                  << " cases reach an absolute pressure below the vapour pressure: the single-phase model "
+                     "does not represent the cavitation there (model.md C12; flow/*_cases.csv)\n";
+    }
+  } // namespace
+
+  Table compute_fixed_orifice_field_table(const ValveDescription &valve)
+  {
+    const CaseRows records = run_chains(valve, PilotGeometry::fixed_orifice);
+    write_case_summary(valve, PilotGeometry::fixed_orifice, records);
+    report_counts("fixed-orifice", records);
+    Table table(schemas::fixed_orifice);
+    std::size_t next = 0;
+    for (double T : valve.sweeps.table_temperatures)
+      {
+        table.rows.push_back({T, 0.0, 0.0, 0.0, 0.0, flags::limit}); // no pressure difference, no flow
+        for (std::size_t j = 0; j < valve.sweeps.field_orifice_pressure_fractions.size(); ++j, ++next)
+          {
+            const auto &r = records[next];
+            table.rows.push_back({T, r[pressure_difference], r[flow_rate], r[discharge_coefficient], r[reynolds_number], r[flag]});
+          }
+      }
+    return table;
+  }
+
+  Table compute_nozzle_flapper_field_table(const ValveDescription &valve)
+  {
+    const CaseRows records = run_chains(valve, PilotGeometry::nozzle_flapper);
+    write_case_summary(valve, PilotGeometry::nozzle_flapper, records);
+    report_counts("nozzle-flapper", records);
+    Table table(schemas::nozzle_flapper);
+    const auto gaps = scaled(valve.sweeps.field_gap_fractions, valve.pilot.null_gap);
+    const auto dps = scaled(valve.sweeps.field_nozzle_pressure_fractions, span(valve));
+    std::size_t next = 0;
+    for (double T : valve.sweeps.table_temperatures)
+      {
+        const PilotClosedForms closed_forms(valve, T);
+        // the closed gap: no flow, the control pressure on the bore's area (E23 at h = 0)
+        table.rows.push_back({T, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, flags::limit});
+        for (double dp : dps)
+          table.rows.push_back({T, 0.0, dp, 0.0, 0.0, 0.0, closed_forms.nozzle(0.0, dp).flapper_force, flags::limit});
+        for (double h : gaps)
+          {
+            table.rows.push_back({T, h, 0.0, 0.0, 0.0, 0.0, 0.0, flags::limit}); // no pressure difference
+            for (std::size_t j = 0; j < dps.size(); ++j, ++next)
+              {
+                const auto &r = records[next];
+                table.rows.push_back({T, h, r[pressure_difference], r[flow_rate], r[discharge_coefficient],
+                                      r[reynolds_number], r[flapper_force], r[flag]});
+              }
+          }
+      }
+    return table;
+  }
+} // namespace servodrift::flow
