@@ -170,6 +170,13 @@ namespace servodrift::flow
       d.solver.scale_pressure_level(dp / previous);
     d.solver.set_boundary_pressure("inlet", dp);
     d.at_rest = false;
+    const auto &operating = d.valve.operating;
+    // the outlet's absolute pressure: the control pressure p_s - dp downstream of the orifice, the
+    // return pressure downstream of the nozzle (gauge + ambient)
+    const double downstream = (d.kind == PilotGeometry::fixed_orifice ? operating.supply_pressure - dp : operating.return_pressure) +
+                              operating.ambient_pressure;
+    if (d.valve.pilot.field_cavitation)
+      d.solver.set_cavitation_pressure(d.valve.fluid.vapour_pressure - downstream);
     r.iterations += d.solver.solve().iterations;
 
     const double rho = d.conditions.fluid.density, mu = d.conditions.fluid.viscosity;
@@ -178,13 +185,10 @@ namespace servodrift::flow
     r.turbulence = d.conditions.turbulence;
     r.flow_rate = d.solver.flow_rate("outlet");
     r.minimum_pressure = d.solver.minimum_pressure();
-    const auto &operating = d.valve.operating;
-    // the outlet's absolute pressure: the control pressure p_s - dp downstream of the orifice, the
-    // return pressure downstream of the nozzle (gauge + ambient)
-    const double downstream = (d.kind == PilotGeometry::fixed_orifice ? operating.supply_pressure - dp : operating.return_pressure) +
-                              operating.ambient_pressure;
     r.minimum_absolute_pressure = downstream + r.minimum_pressure;
-    r.cavitating = r.minimum_absolute_pressure < d.valve.fluid.vapour_pressure;
+    const auto gamma = d.solver.liquid_fraction();
+    r.cavitating = *std::min_element(gamma.begin(), gamma.end()) < 1 ||
+                   r.minimum_absolute_pressure < d.valve.fluid.vapour_pressure * (1 - 1e-9);
     const auto y_plus = d.solver.wall_y_plus();
     r.max_wall_y_plus = *std::max_element(y_plus.begin(), y_plus.end());
 

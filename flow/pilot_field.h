@@ -41,7 +41,8 @@ namespace servodrift::flow
     double bore_pressure = 0;             ///< nozzle: mean pressure of the bore's exit section, minus p_r [Pa]
     double minimum_pressure = 0;          ///< lowest pressure, relative to the outlet's [Pa]
     double minimum_absolute_pressure = 0; ///< the same, absolute (the downstream gauge pressure + ambient) [Pa]
-    bool cavitating = false;              ///< minimum_absolute_pressure below the vapour pressure (C12)
+    /// with cavitation: some cell cavitates; without: the lowest absolute pressure is below the vapour pressure (C12)
+    bool cavitating = false;
     double max_wall_y_plus = 0;           ///< largest y+ of a wall-adjacent cell centre [1]
     unsigned int iterations = 0;          ///< SIMPLEC iterations of this solve (start-up included)
     FlowSolverParameters::Turbulence turbulence = FlowSolverParameters::Turbulence::laminar;

@@ -171,6 +171,34 @@ namespace servodrift::flow
     // equations; the two-layer model needs each cell's distance to the nearest wall
     std::vector<double> wall_distance;
     void compute_wall_distance();
+    // Cavitation (equilibrium, mass-conserving): each cell is liquid (gamma = 1, p >= p_cav) or
+    // cavitating (p = p_cav, gamma < 1); the mixture density rho (gamma + (1 - gamma) vapour ratio)
+    // carries the mass. mass_flux = mixture density ratio (upwind) x flux.
+    bool cavitation = false;
+    double cavitation_pressure = -1e300;
+    std::vector<double> liquid_fraction, mass_flux;
+    std::vector<char> cavitating;
+    double mixture_ratio(std::size_t cell) const
+    {
+      return liquid_fraction[cell] + (1 - liquid_fraction[cell]) * settings.vapour_density_ratio;
+    }
+    /// The mixture density ratio carried by face f with volume flux F (upwind; an inflow is liquid).
+    double face_mixture_ratio(std::size_t f, double F) const
+    {
+      if (!cavitation)
+        return 1.0;
+      if (mesh.neighbour[f] < 0)
+        return F >= 0 ? mixture_ratio(mesh.owner[f]) : 1.0;
+      return mixture_ratio(F >= 0 ? mesh.owner[f] : static_cast<unsigned int>(mesh.neighbour[f]));
+    }
+    void update_mass_flux()
+    {
+      mass_flux.resize(mesh.n_faces());
+      for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+        mass_flux[f] = face_mixture_ratio(f, flux[f]) * flux[f];
+    }
+    void update_liquid_fraction();
+    const std::vector<double> &convecting_flux() const { return cavitation ? mass_flux : flux; }
     std::function<std::vector<double>()> monitor;
     unsigned int monitor_window = 50;
     double monitor_change = 1e-4;
@@ -251,6 +279,8 @@ namespace servodrift::flow
       compute_wall_distance();
     mu_t.assign(n, 0.0);
     k.assign(n, 0.0), epsilon.assign(n, 0.0), k_b.assign(nf, 0.0), epsilon_b.assign(nf, 0.0);
+    liquid_fraction.assign(n, 1.0), cavitating.assign(n, 0);
+    mass_flux = flux;
     update_face_viscosity();
     update_boundary_values();
   }
@@ -326,7 +356,7 @@ namespace servodrift::flow
             p_b[f] = bc.pressure - 0.5 * fluid.density * u_n * u_n;
           }
         else // extrapolated with the last gradient (second order at walls: the wall pressure force)
-          p_b[f] = p[P] + grad_p[P].dot(mesh.face_center[f] - mesh.cell_center[P]);
+          p_b[f] = std::max(p[P] + grad_p[P].dot(mesh.face_center[f] - mesh.cell_center[P]), cavitation_pressure);
       }
   }
 
@@ -376,7 +406,7 @@ namespace servodrift::flow
       {
         const unsigned int P = mesh.owner[f];
         const Vector2 &nrm = mesh.face_normal[f];
-        const double area = mesh.face_area[f], F = flux[f];
+        const double area = mesh.face_area[f], F = convecting_flux()[f];
         if (mesh.neighbour[f] >= 0)
           {
             const unsigned int N = mesh.neighbour[f];
@@ -614,17 +644,21 @@ namespace servodrift::flow
     for (std::size_t f = 0; f < mesh.n_faces(); ++f)
       {
         const unsigned int P = mesh.owner[f];
-        imbalance[P] += F[f];
+        // the mixture's mass balance: liquid cells carry the mixture density ratio of the upwind
+        // cell through each face (1 without cavitation); it weights flux and correction alike, so
+        // the matrix stays symmetric
+        const double m = face_mixture_ratio(f, F[f]);
+        imbalance[P] += m * F[f];
         const Vector2 &nrm = mesh.face_normal[f];
         if (mesh.neighbour[f] >= 0)
           {
             const unsigned int N = mesh.neighbour[f];
-            imbalance[N] -= F[f];
+            imbalance[N] -= m * F[f];
             const double w = mesh.face_weight(f);
             const Vector2 d = mesh.cell_center[N] - mesh.cell_center[P];
             coefficient[f] = rho * (w * D_simplec[P] + (1 - w) * D_simplec[N]) * mesh.face_area[f] / nrm.dot(d);
-            value[owner_row_index[f]] = value[neighbour_row_index[f]] = -coefficient[f];
-            diag[P] += coefficient[f], diag[N] += coefficient[f];
+            value[owner_row_index[f]] = value[neighbour_row_index[f]] = -m * coefficient[f];
+            diag[P] += m * coefficient[f], diag[N] += m * coefficient[f];
           }
         else if (is_pressure_boundary(face_kind[f]))
           {
@@ -637,7 +671,7 @@ namespace servodrift::flow
                 const double A = mesh.face_area[f];
                 coefficient[f] /= 1 + coefficient[f] * std::abs(F[f]) / (rho * A * A);
               }
-            diag[P] += coefficient[f];
+            diag[P] += m * coefficient[f];
           }
       }
     if (!has_pressure_boundary)
@@ -649,7 +683,33 @@ namespace servodrift::flow
     for (std::size_t c = 0; c < n; ++c)
       {
         rhs[c] = -imbalance[c];
-        sum += std::abs(imbalance[c]);
+        if (!cavitation || !cavitating[c])
+          sum += std::abs(imbalance[c]);
+      }
+    if (cavitation)
+      {
+        // a cavitating cell holds p = p_cav: its row is p' = p_cav - p, and its liquid neighbours
+        // see that p' as known (moved to their right-hand side, symmetric elimination); the
+        // liquid fraction balances its mass instead (update_liquid_fraction)
+        for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+          if (mesh.neighbour[f] >= 0)
+            {
+              const unsigned int P = mesh.owner[f], N = mesh.neighbour[f];
+              if (!cavitating[P] && !cavitating[N])
+                continue;
+              const double a = -value[owner_row_index[f]]; // m c
+              if (!cavitating[P])
+                rhs[P] += a * (cavitation_pressure - p[N]);
+              if (!cavitating[N])
+                rhs[N] += a * (cavitation_pressure - p[P]);
+              value[owner_row_index[f]] = value[neighbour_row_index[f]] = 0;
+            }
+        for (std::size_t c = 0; c < n; ++c)
+          if (cavitating[c])
+            {
+              value[diagonal_index[c]] = 1;
+              rhs[c] = cavitation_pressure - p[c];
+            }
       }
     // Conjugate gradients preconditioned by the Cholesky factor of a recent matrix: a new numeric
     // factorisation (the symbolic one is reused) when the factor has aged so that CG needs more than
@@ -695,7 +755,16 @@ namespace servodrift::flow
       {
         u[c] -= D_simplec[c] * grad_pc[c].x();
         v[c] -= D_simplec[c] * grad_pc[c].y();
-        p[c] += settings.pressure_relaxation * pc[c];
+        if (cavitation && cavitating[c])
+          p[c] = cavitation_pressure;
+        else
+          p[c] += settings.pressure_relaxation * pc[c];
+        if (cavitation && p[c] < cavitation_pressure)
+          {
+            // the liquid would be stretched below the vapour pressure: the cell cavitates
+            p[c] = cavitation_pressure;
+            cavitating[c] = 1;
+          }
       }
     return sum;
   }
@@ -726,6 +795,11 @@ namespace servodrift::flow
                                                    circulation / std::sqrt(double(n)); // closed domain
     const double imbalance = pressure_correction(F);
     flux = F;
+    if (cavitation)
+      {
+        update_liquid_fraction();
+        update_mass_flux();
+      }
     for (std::size_t f = 0; f < mesh.n_faces(); ++f)
       if (mesh.neighbour[f] < 0 && is_pressure_boundary(face_kind[f]))
         inflow_speed[f] = std::min(flux[f], 0.0) / (fluid.density * mesh.face_area[f]);
@@ -758,6 +832,37 @@ namespace servodrift::flow
           mut = mu_t[P];
         mu_face[f] = fluid.viscosity + mut;
       }
+  }
+
+  /// The liquid fraction of the cavitating cells from their mixture mass balance with the new
+  /// volume fluxes, upwind: gamma~_P sum(out) F = sum(in) gamma~_upwind |F| (Gauss-Seidel sweeps). A
+  /// cell whose inflow would need gamma~ >= 1 is liquid again: the cavity closes there and its
+  /// pressure is free to rise.
+  void SimplecSolver::Implementation::update_liquid_fraction()
+  {
+    const double ratio = settings.vapour_density_ratio;
+    for (int sweep = 0; sweep < 4; ++sweep)
+      for (std::size_t c = 0; c < mesh.n_cells(); ++c)
+        {
+          if (!cavitating[c])
+            continue;
+          double in = 0, out = 0;
+          for (unsigned int f : mesh.cell_faces[c])
+            {
+              const double F = mesh.owner[f] == c ? flux[f] : -flux[f]; // out of c
+              if (F > 0)
+                out += F;
+              else if (F < 0)
+                in += -F * (mesh.neighbour[f] < 0 ? 1.0 : mixture_ratio(mesh.owner[f] == c ? mesh.neighbour[f] : mesh.owner[f]));
+            }
+          if (out <= 1e-300 * (in + 1))
+            continue; // stagnant: keep
+          const double mixture = in / out;
+          if (mixture >= 1)
+            cavitating[c] = 0, liquid_fraction[c] = 1;
+          else
+            liquid_fraction[c] = std::max(0.0, (mixture - ratio) / (1 - ratio));
+        }
   }
 
   namespace k_epsilon
@@ -1156,6 +1261,8 @@ namespace servodrift::flow
       f.k = d.k, f.epsilon = d.epsilon, f.turbulent_viscosity = d.mu_t;
     f.face_area = d.mesh.face_area;
     f.density = d.fluid.density;
+    if (d.cavitation)
+      f.liquid_fraction = d.liquid_fraction, f.cavitating = d.cavitating;
     for (std::size_t k = 0; k < d.patch_condition.size(); ++k)
       if (is_pressure_boundary(d.patch_condition[k].kind))
         f.boundary_pressures.emplace_back(d.mesh.patch_names[k], d.patch_condition[k].pressure);
@@ -1187,6 +1294,11 @@ namespace servodrift::flow
     for (std::size_t f = 0; f < d.mesh.n_faces(); ++f)
       if (d.face_kind[f] != Kind::velocity_inlet || d.mesh.neighbour[f] >= 0)
         d.flux[f] = o.flux[f] * d.mesh.face_area[f] / o.face_area[f] * d.fluid.density / o.density;
+    if (o.liquid_fraction.size() == d.mesh.n_cells())
+      d.liquid_fraction = o.liquid_fraction, d.cavitating = o.cavitating;
+    else
+      std::fill(d.liquid_fraction.begin(), d.liquid_fraction.end(), 1.0), std::fill(d.cavitating.begin(), d.cavitating.end(), 0);
+    d.update_mass_flux();
     for (std::size_t f = 0; f < d.mesh.n_faces(); ++f)
       if (d.mesh.neighbour[f] < 0 && is_pressure_boundary(d.face_kind[f]))
         d.inflow_speed[f] = std::min(d.flux[f], 0.0) / (d.fluid.density * d.mesh.face_area[f]);
@@ -1196,6 +1308,18 @@ namespace servodrift::flow
   }
 
   void SimplecSolver::initialize_from(const SimplecSolver &other) { set_fields(other.fields()); }
+
+  void SimplecSolver::set_cavitation_pressure(double p_cav)
+  {
+    auto &d = *impl;
+    if (!std::isfinite(p_cav))
+      throw std::invalid_argument("flow: cavitation pressure " + format_number(p_cav) + " Pa");
+    d.cavitation = true;
+    d.cavitation_pressure = p_cav;
+    d.update_mass_flux();
+  }
+
+  std::vector<double> SimplecSolver::liquid_fraction() const { return impl->liquid_fraction; }
 
   void SimplecSolver::set_convergence_monitor(std::function<std::vector<double>()> monitor, unsigned int window,
                                               double relative_change)
@@ -1253,7 +1377,7 @@ namespace servodrift::flow
   {
     double q = 0;
     for (unsigned int f : faces_of(impl->mesh, patch))
-      q += impl->flux[f];
+      q += impl->convecting_flux()[f];
     return q / impl->fluid.density * revolution(impl->mesh);
   }
 
@@ -1335,10 +1459,11 @@ namespace servodrift::flow
   void SimplecSolver::write_vtu(const std::string &filename) const
   {
     const auto &d = *impl;
+    std::vector<std::pair<std::string, std::vector<double>>> extra{{"y_plus", wall_y_plus()}};
     if (d.turbulent)
-      write_fv_vtu(filename, d.mesh, d.p, d.u, d.v, d.p_b, d.u_b, d.v_b,
-                   {{"y_plus", wall_y_plus()}, {"k", d.k}, {"epsilon", d.epsilon}, {"turbulent_viscosity", d.mu_t}});
-    else
-      write_fv_vtu(filename, d.mesh, d.p, d.u, d.v, d.p_b, d.u_b, d.v_b, {{"y_plus", wall_y_plus()}});
+      extra.insert(extra.end(), {{"k", d.k}, {"epsilon", d.epsilon}, {"turbulent_viscosity", d.mu_t}});
+    if (d.cavitation)
+      extra.emplace_back("liquid_fraction", d.liquid_fraction);
+    write_fv_vtu(filename, d.mesh, d.p, d.u, d.v, d.p_b, d.u_b, d.v_b, extra);
   }
 } // namespace servodrift::flow

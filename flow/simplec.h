@@ -81,6 +81,8 @@ namespace servodrift::flow
     double density = 0;                            ///< of the fluid they were computed with
     std::vector<std::pair<std::string, double>> boundary_pressures; ///< pressure patches
     bool turbulent = false;
+    std::vector<double> liquid_fraction; ///< with cavitation (empty otherwise)
+    std::vector<char> cavitating;
   };
 
   class SimplecSolver
@@ -107,6 +109,15 @@ namespace servodrift::flow
     /// Continuation: starts from the fields of a solver on a mesh of the same topology (the same
     /// template with other dimensions). Throws std::invalid_argument if the cell counts differ.
     void initialize_from(const SimplecSolver &other);
+
+    /// Cavitation (equilibrium, mass-conserving): no pressure below p_cav [Pa, in the solver's own
+    /// gauge]. A cell whose pressure would fall below it cavitates: its pressure stays at p_cav and
+    /// its liquid fraction gamma < 1 balances its mass (the mixture density rho (gamma + (1 - gamma)
+    /// `Vapour density ratio')); it is liquid again where its inflow fills it. Call before each solve
+    /// whose reference pressure changes (the vapour pressure is absolute).
+    void set_cavitation_pressure(double p_cav);
+    /// Liquid volume fraction per cell (all 1 without cavitation).
+    std::vector<double> liquid_fraction() const;
 
     /// The fields as they are, and a start from fields of a mesh of the same topology (see
     /// initialize_from).
@@ -140,7 +151,8 @@ namespace servodrift::flow
     double boundary_pressure(std::size_t face) const;
     Vector2 boundary_velocity(std::size_t face) const;
 
-    /// Volumetric flow out through a patch [m^3/s]: a full revolution if axisymmetric, unit depth if planar.
+    /// Volumetric flow out through a patch [m^3/s]: a full revolution if axisymmetric, unit depth if
+    /// planar; with cavitation the mixture's mass flow over the liquid density (the liquid's volume flow).
     double flow_rate(const std::string &patch) const;
     /// Area-weighted mean pressure on a patch [Pa].
     double mean_pressure(const std::string &patch) const;

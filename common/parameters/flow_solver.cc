@@ -52,6 +52,10 @@ namespace servodrift
                       "Under-relaxation of the turbulent viscosity mu_t between iterations. Above about 0.7 "
                       "the momentum-mu_t coupling of the valve's cases settles into a two-iteration cycle "
                       "whose mass imbalance never falls below 1e-3 (doc/method.md). [1]");
+    prm.declare_entry("Vapour density ratio", "1e-3", Patterns::Double(1e-8, 0.5),
+                      "Where a stage models cavitation: density of the vapour in a cavitating cell over the "
+                      "liquid's. The real ratio is about 1e-5; at 1e-3 the vapour's momentum is still "
+                      "negligible and the liquid fraction stays well conditioned. [1]");
     prm.declare_entry("Realizability coefficient", "0.6", Patterns::Double(0, 1),
                       "Two-layer k-epsilon: Durbin's bound on the turbulence time scale, k/epsilon <= "
                       "alpha/(sqrt(6) C_mu |S|), which keeps the modelled normal stresses >= 0 where the strain "
@@ -82,6 +86,7 @@ namespace servodrift
     turbulence_relaxation = prm.get_double("Turbulence relaxation");
     turbulent_viscosity_relaxation = prm.get_double("Turbulent viscosity relaxation");
     realizability_coefficient = prm.get_double("Realizability coefficient");
+    vapour_density_ratio = prm.get_double("Vapour density ratio");
     prm.leave_subsection();
   }
 } // namespace servodrift

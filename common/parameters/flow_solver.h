@@ -23,6 +23,7 @@ namespace servodrift
     Turbulence turbulence;          ///< laminar; standard k-epsilon, two-layer; Launder-Sharma k-epsilon
     double turbulence_relaxation;   ///< under-relaxation of the k and epsilon equations [1]
     double turbulent_viscosity_relaxation; ///< under-relaxation of mu_t [1]
+    double vapour_density_ratio;    ///< cavitation: vapour over liquid density in the mixture [1]
     double realizability_coefficient; ///< Durbin's time-scale bound alpha (two-layer k-epsilon; 0: off) [1]
 
     static void declare_parameters(dealii::ParameterHandler &prm);

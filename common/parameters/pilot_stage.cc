@@ -47,6 +47,13 @@ namespace servodrift
     prm.declare_entry("Field outlet radius", "4", Patterns::Double(1.5, 100),
                       "Field level: radius of the nozzle-flapper case's radial outlet (return "
                       "pressure), in land radii D_land/2. [1]");
+    prm.declare_entry("Field cavitation", "true", Patterns::Bool(),
+                      "Field level: the cases model cavitation (equilibrium, mass-conserving: no absolute "
+                      "pressure below `Fluid/Vapour pressure'; a cell that would go below holds it and its "
+                      "liquid fraction carries the mass). Without it (single-phase, D11 as printed) the "
+                      "suction ring at the land's inner edge reaches tens of MPa below zero absolute at "
+                      "RV-1's pressures (C12) and the flapper force and C_dn follow that unphysical "
+                      "suction. [-]");
     const char *models = "automatic|laminar|k-epsilon|k-epsilon-launder-sharma";
     prm.declare_entry("Fixed orifice flow model", "automatic", Patterns::Selection(models),
                       "Field level: flow model of the fixed-orifice cases (D11): laminar, k-epsilon (the "
@@ -96,6 +103,7 @@ namespace servodrift
     field_plenum_size = prm.get_double("Field plenum size");
     field_chamber_length = prm.get_double("Field chamber length");
     field_outlet_radius = prm.get_double("Field outlet radius");
+    field_cavitation = prm.get_bool("Field cavitation");
     auto model_of = [&](const char *entry) {
       const std::string m = prm.get(entry);
       return m == "laminar"                  ? FlowModel::laminar :

@@ -28,6 +28,7 @@ namespace servodrift
     double field_plenum_size;       ///< orifice plenum radius and length / bore radius [1]
     double field_chamber_length;    ///< orifice downstream chamber length / bore radius [1]
     double field_outlet_radius;     ///< nozzle-flapper outlet radius / land radius [1]
+    bool field_cavitation;          ///< field cases model cavitation at the vapour pressure
     /// flow model of a field case: automatic picks laminar below the transition Reynolds number
     /// (ideal velocity: E17 for the orifice, 2h sqrt(2 dp/rho)/nu for the nozzle) and k-epsilon above
     enum class FlowModel { automatic, laminar, k_epsilon, k_epsilon_launder_sharma };
