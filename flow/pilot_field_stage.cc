@@ -163,7 +163,8 @@ namespace servodrift::flow
         else if (last && last_model != t)
           slot->set_fields(*last); // the chain switched model: continue from the other model's fields
         const std::string vtu = flow_directory(valve) + "/" + vtu_name(kind, conditions.temperature, h, dp);
-        slot->set_failure_output(writes_fields(valve, conditions.temperature) ? vtu : "");
+        failure_output = writes_fields(valve, conditions.temperature) ? vtu : "";
+        slot->set_failure_output(failure_output);
 
         std::vector<double> record(record_length, 0.0);
         record[geometry] = orifice ? 0 : 1;
@@ -176,7 +177,7 @@ namespace servodrift::flow
         record[reduced_flapper_force] = reduced.flapper_force;
         try
           {
-            const PilotFieldResult r = slot->solve(dp);
+            const PilotFieldResult r = solve_with_retry(slot, t, h, dp, start.has_value());
             record[flow_rate] = r.flow_rate;
             record[discharge_coefficient] = r.discharge_coefficient;
             record[reynolds_number] = r.reynolds_number;
@@ -191,6 +192,7 @@ namespace servodrift::flow
             record[flag] = flags::computed;
             last = slot->fields();
             last_model = t;
+            last_dp = dp;
             if (writes_fields(valve, conditions.temperature))
               slot->write_vtu(vtu);
           }
@@ -219,6 +221,39 @@ namespace servodrift::flow
       const std::optional<FlowFields> &last_fields() const { return last; }
 
     private:
+      /// Continuation step control: a case that does not converge from its starting fields is tried
+      /// once more, from the chain's last converged fields of its own model through the geometric
+      /// mean of the two pressure levels (half the step, in the logarithm), or, where there is no
+      /// such state at this gap or it is the same pressure level, from rest (laminar start-up).
+      /// The second failure propagates.
+      PilotFieldResult solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
+                                        bool started_elsewhere)
+      {
+        try
+          {
+            return slot->solve(dp);
+          }
+        catch (const std::runtime_error &)
+          {
+            const bool own_state = last && last_model == t && !started_elsewhere && last_dp != dp;
+            PilotFieldCase c = conditions;
+            c.turbulence = t;
+            if (own_state)
+              {
+                slot->set_fields(*last);
+                const double between = std::sqrt(last_dp * dp);
+                PilotFieldResult r = slot->solve(between);
+                const unsigned int iterations = r.iterations;
+                r = slot->solve(dp);
+                r.iterations += iterations;
+                return r;
+              }
+            slot = std::make_unique<PilotField>(valve, kind, c, h);
+            slot->set_failure_output(failure_output);
+            return slot->solve(dp);
+          }
+      }
+
       const ValveDescription &valve;
       PilotGeometry kind;
       PilotFieldCase conditions;
@@ -227,6 +262,8 @@ namespace servodrift::flow
       std::map<Turbulence, std::unique_ptr<PilotField>> cases;
       std::optional<FlowFields> last;
       Turbulence last_model = Turbulence::laminar;
+      double last_dp = 0; ///< the pressure level of `last'
+      std::string failure_output; ///< the VTU of the case being solved, if it fails
     };
 
     CaseRows orifice_chain(const ValveDescription &valve, double T)
@@ -348,7 +385,7 @@ namespace servodrift::flow
       return n;
     }
 
-    void report_counts(const char *what, const CaseRows &records)
+    void report_counts(const char *what, const CaseRows &records, bool valve_cavitation)
     {
       if (mpi_rank() != 0)
         return;
@@ -359,8 +396,11 @@ namespace servodrift::flow
                   << " cases did not converge (flag 2; see flow/*_cases.csv)\n";
       if (cavitating_cases > 0)
         std::cerr << "servodrift: note: " << cavitating_cases << " of " << records.size() << " " << what
-                  << " cases reach an absolute pressure below the vapour pressure: the single-phase model "
-                     "does not represent the cavitation there (model.md C12; flow/*_cases.csv)\n";
+                  << " cases cavitate ("
+                  << (valve_cavitation ? "the equilibrium cavitation model holds those cells at the vapour pressure"
+                                       : "Pilot stage/Field cavitation is off: the single-phase result stretches the "
+                                         "liquid below its vapour pressure and is not physical there")
+                  << "; model.md C12; flow/*_cases.csv)\n";
     }
   } // namespace
 
@@ -368,7 +408,7 @@ namespace servodrift::flow
   {
     const CaseRows records = run_chains(valve, PilotGeometry::fixed_orifice);
     write_case_summary(valve, PilotGeometry::fixed_orifice, records);
-    report_counts("fixed-orifice", records);
+    report_counts("fixed-orifice", records, valve.pilot.field_cavitation);
     Table table(schemas::fixed_orifice);
     std::size_t next = 0;
     for (double T : valve.sweeps.table_temperatures)
@@ -387,7 +427,7 @@ namespace servodrift::flow
   {
     const CaseRows records = run_chains(valve, PilotGeometry::nozzle_flapper);
     write_case_summary(valve, PilotGeometry::nozzle_flapper, records);
-    report_counts("nozzle-flapper", records);
+    report_counts("nozzle-flapper", records, valve.pilot.field_cavitation);
     Table table(schemas::nozzle_flapper);
     const auto gaps = scaled(valve.sweeps.field_gap_fractions, valve.pilot.null_gap);
     const auto dps = scaled(valve.sweeps.field_nozzle_pressure_fractions, span(valve));

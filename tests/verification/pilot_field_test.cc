@@ -1,21 +1,25 @@
-// Field level of the pilot stage (flow/pilot_field, issue 5, laminar part): the axisymmetric fixed
-// orifice and nozzle-flapper cases of RV-1 at 40 degC on their default meshes.
+// Field level of the pilot stage (flow/pilot_field, issue 5): the axisymmetric fixed orifice and
+// nozzle-flapper cases of RV-1 at 40 degC on their default meshes, and the stage's flagged rows.
 // - the meshes resolve what the issue asks: 30 cells across the bore radius, 20 across the gap;
-// - fixed orifice, laminar, Re_0 = 110..490: C_d within 5 % of Lichtarowicz (E21, the issue's
-//   tolerance; measured -1.3 .. -4.6 %, and within 0.4 % of a mesh 1.5 times finer);
-// - nozzle-flapper: axial momentum is conserved between the bore's exit and the flapper (model.md
-//   C12 (1), 2 %); C_dn at a laminar operating point within 10 % of E22; the flapper force falls as
-//   the gap opens;
-// - bad cases (closed gap, reversed pressure difference) are refused.
+// - fixed orifice against Lichtarowicz (E21) within 5 %: laminar at Re_0 = 110..490 (measured
+//   -1.3 .. -4.6 %), two-layer k-epsilon at Re_0 = 2000 and 5000 (-2.8, -3.5 %);
+// - nozzle-flapper: axial momentum conserved between the bore's exit and the flapper (C12 (1));
+//   C_dn within 10 % of E22; the force's trend in the gap, at fixed dp and in the orifice bridge;
+// - mesh convergence (resolution 0.7, 1, 1.4: below 1 % between the two finest) and insensitivity
+//   to the outlet radius and the plenum size (below 0.5 %);
+// - bad cases are refused (closed gap, reversed pressure difference) or flagged (not converged).
 #include "common/error.h"
 #include "common/units.h"
 #include "flow/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
+#include "flow/pilot_field_stage.h"
+#include "common/table.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 namespace servodrift::flow
 {
@@ -130,5 +134,197 @@ namespace servodrift::flow
     PilotField orifice(v, PilotGeometry::fixed_orifice, c);
     EXPECT_THROW(orifice.solve(-1e5), InputError);
     EXPECT_THROW(orifice.solve(0), InputError);
+  }
+  namespace
+  {
+    /// Lichtarowicz (E21) at a given Reynolds number: the field's own Re, so the comparison is at
+    /// the same velocity definition (E17)
+    double lichtarowicz(const ValveDescription &v, double reynolds_number)
+    {
+      const double l_over_d = v.pilot.fixed_orifice_length / v.pilot.fixed_orifice_diameter;
+      return 1 / (1 / (0.827 - 0.0085 * l_over_d) + 20 * (1 + 2.25 * l_over_d) / reynolds_number);
+    }
+
+    /// RV-1's nozzle at its null conditions (40 degC, dp = p_c - p_r = 10.4 MPa, cavitation on),
+    /// solved from rest at `resolution' and gap h; returns the result
+    PilotFieldResult nozzle_at_null(const ValveDescription &v, double h, double resolution = 1)
+    {
+      PilotFieldCase c = pilot_field_case(v, 40);
+      c.resolution = resolution;
+      PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, h);
+      return nozzle.solve(10.4e6);
+    }
+
+    PilotFieldResult orifice_laminar(const ValveDescription &v, double resolution = 1)
+    {
+      PilotFieldCase c = pilot_field_case(v, 40);
+      c.resolution = resolution;
+      PilotField orifice(v, PilotGeometry::fixed_orifice, c);
+      return orifice.solve(400e3); // Re_0 = 493, laminar
+    }
+  } // namespace
+
+  // k-epsilon (two-layer) above the laminar range. The Reynolds number is set by the viscosity at
+  // RV-1's operating pressure difference, cavitation off (Lichtarowicz's data are non-cavitating),
+  // continuation from Re 2000 to 5000. Tolerance 5 % (the issue's; the correlation's own scatter
+  // is of that order). Measured -2.8 % and -3.5 %.
+  TEST(PilotField, FixedOrificeFollowsLichtarowiczWithKEpsilon)
+  {
+    ValveDescription v = laminar_valve();
+    v.pilot.field_cavitation = false;
+    PilotFieldCase c = pilot_field_case(v, 40);
+    c.turbulence = FlowSolverParameters::Turbulence::k_epsilon;
+    const double dp = 10.3e6, mu = c.fluid.viscosity;
+    const PilotClosedForms closed_forms(v, 40);
+    const double reynolds_at_mu = closed_forms.fixed_orifice(dp).reynolds_number;
+    std::unique_ptr<PilotField> previous;
+    for (double Re : {2000.0, 5000.0})
+      {
+        c.fluid.viscosity = mu * reynolds_at_mu / Re;
+        auto orifice = std::make_unique<PilotField>(v, PilotGeometry::fixed_orifice, c);
+        if (previous)
+          orifice->initialize_from(*previous);
+        const PilotFieldResult r = orifice->solve(dp);
+        const double e21 = lichtarowicz(v, r.reynolds_number);
+        std::printf("fixed orifice k-epsilon Re_0 %.0f: C_d %.4f, Lichtarowicz %.4f (%+.2f %%), wall y+ <= %.1f, %u iterations\n",
+                    r.reynolds_number, r.discharge_coefficient, e21, 100 * (r.discharge_coefficient / e21 - 1),
+                    r.max_wall_y_plus, r.iterations);
+        EXPECT_NEAR(r.discharge_coefficient / e21, 1, 0.05);
+        previous = std::move(orifice);
+      }
+  }
+
+  // RV-1's nozzle at its null conditions with cavitation (40 degC, dp = 10.4 MPa), x_f = -10, 0, +10 um:
+  // - C12 (1), momentum conservation: flapper force minus land force equals the axial momentum
+  //   through the bore's exit plane, int (p - p_r + rho u_x^2) dA, within 1 % (measured 0.4 %). Its
+  //   uniform-velocity form (p_bore - p_r) A_N + rho Q^2/A_N is short by the momentum-flux factor
+  //   beta of the exit profile (printed; 1.0 for a flat profile, 1.33 for Poiseuille);
+  // - C_dn within 10 % of E22 at x0 (measured +2.5 %);
+  // - at a fixed dp the force grows with the gap, as in E23 (the curtain momentum grows with h);
+  //   in the valve, where the fixed orifice feeds the nozzle, the control pressure falls as the gap
+  //   opens and the force with it: F(h) (p_c(h) - p_r)/dp with p_c from the orifice-nozzle bridge
+  //   (E21 for the orifice, the field's C_dn) falls with h, and its change is odd in x_f to first
+  //   order: the even part F(x0-x) + F(x0+x) - 2 F(x0) is below a quarter of the odd part;
+  // - E23 is reported beside (C12 (2)): the suction ring at the land makes the field force lower.
+  TEST(PilotField, NozzleAtTheNullWithCavitation)
+  {
+    const ValveDescription v = laminar_valve();
+    const PilotClosedForms closed_forms(v, 40);
+    const PilotFieldCase c = pilot_field_case(v, 40);
+    const auto &g = closed_forms.geometry();
+    const double A_N = units::pi * std::pow(g.nozzle_diameter, 2) / 4, dp = 10.4e6;
+    const double span = v.operating.supply_pressure - v.operating.return_pressure;
+    const double orifice_conductance =
+      closed_forms.fixed_orifice(span / 2).discharge_coefficient * units::pi * std::pow(g.fixed_orifice_diameter, 2) / 4;
+    std::vector<double> force, bridge_force, e23;
+    std::unique_ptr<PilotField> previous;
+    for (double gap : {40e-6, 30e-6, 50e-6})
+      {
+        auto nozzle = std::make_unique<PilotField>(v, PilotGeometry::nozzle_flapper, c, gap);
+        if (previous)
+          nozzle->initialize_from(*previous);
+        const PilotFieldResult r = nozzle->solve(dp);
+        const OrificeState e = closed_forms.nozzle(gap, dp);
+        const double uniform = r.bore_pressure * A_N + c.fluid.density * r.flow_rate * r.flow_rate / A_N;
+        const double beta = (r.jet_force - r.bore_pressure * A_N) / (c.fluid.density * r.flow_rate * r.flow_rate / A_N);
+        // the bridge: C_d0 A_0 sqrt(p_s - p_c) = C_dn pi D_N h sqrt(p_c - p_r)
+        const double ratio = r.discharge_coefficient * units::pi * g.nozzle_diameter * gap / orifice_conductance;
+        const double control = span / (1 + ratio * ratio);
+        std::printf("nozzle h %.0f um, dp %.3g Pa: Re_n %.0f, C_dn %.4f (E22 %.4f, %+.1f %%), F %.4f N (E23 %.4f, %+.1f %%), "
+                    "land %.4f N, momentum balance %+.2f %% (uniform-velocity form %+.2f %%, beta %.3f), "
+                    "bridge p_c - p_r %.3f MPa, cavitating %d, %u iterations\n",
+                    gap * 1e6, dp, r.reynolds_number, r.discharge_coefficient, e.discharge_coefficient,
+                    100 * (r.discharge_coefficient / e.discharge_coefficient - 1), r.flapper_force, e.flapper_force,
+                    100 * (r.flapper_force / e.flapper_force - 1), r.land_force,
+                    100 * ((r.flapper_force - r.land_force) / r.jet_force - 1),
+                    100 * ((r.flapper_force - r.land_force) / uniform - 1), beta, control * 1e-6, int(r.cavitating),
+                    r.iterations);
+        EXPECT_NEAR((r.flapper_force - r.land_force) / r.jet_force, 1, 0.01);
+        EXPECT_GE(beta, 1.0);
+        if (gap == 40e-6)
+          {
+            EXPECT_NEAR(r.discharge_coefficient / e.discharge_coefficient, 1, 0.10);
+            previous = std::move(nozzle);
+          }
+        force.push_back(r.flapper_force);
+        e23.push_back(e.flapper_force);
+        bridge_force.push_back(r.flapper_force * control / dp);
+      }
+    // at fixed dp: the sign of E23's trend
+    EXPECT_LT(force[1], force[0]);
+    EXPECT_LT(force[0], force[2]);
+    EXPECT_LT(e23[1], e23[0]);
+    // in the bridge: falls as the gap opens, odd to first order
+    const double F0 = bridge_force[0], F_closing = bridge_force[1], F_opening = bridge_force[2];
+    EXPECT_GT(F_closing, F0);
+    EXPECT_GT(F0, F_opening);
+    const double odd = F_closing - F_opening, even = F_closing + F_opening - 2 * F0;
+    std::printf("bridge force change: odd part %.4f N (K_f %.0f N/m), even part %.4f N (ratio %.3f)\n", odd,
+                odd / 20e-6, even, even / odd);
+    EXPECT_LT(std::abs(even / odd), 0.25);
+  }
+
+  // Mesh convergence at the cases' conditions: resolution 0.7, 1 and 1.4 (cell counts 1 : 2 : 4);
+  // between the two finest C_d and force change by less than 1 % (the issue's tolerance).
+  TEST(PilotField, MeshConvergence)
+  {
+    ValveDescription v = laminar_valve();
+    v.flow_solver.max_iterations = 15000; // SIMPLEC's rate falls with the cell count: the finest needs about 7000
+    std::vector<PilotFieldResult> nozzle, orifice;
+    for (double resolution : {0.7, 1.0, 1.4})
+      {
+        nozzle.push_back(nozzle_at_null(v, 40e-6, resolution));
+        orifice.push_back(orifice_laminar(v, resolution));
+        std::printf("resolution %.1f: nozzle C_dn %.5f, F %.5f N; orifice C_d %.5f\n", resolution,
+                    nozzle.back().discharge_coefficient, nozzle.back().flapper_force, orifice.back().discharge_coefficient);
+      }
+    EXPECT_LT(test::relative(nozzle[1].discharge_coefficient, nozzle[2].discharge_coefficient), 0.01);
+    EXPECT_LT(test::relative(nozzle[1].flapper_force, nozzle[2].flapper_force), 0.01);
+    EXPECT_LT(test::relative(orifice[1].discharge_coefficient, orifice[2].discharge_coefficient), 0.01);
+  }
+
+  // The artificial boundaries do not matter: the nozzle's outlet radius 4 -> 6 land radii and the
+  // orifice's plenum 6 -> 9 bore radii change C_d and force by less than 0.5 % (the issue's tolerance).
+  TEST(PilotField, InsensitiveToOutletRadiusAndPlenumSize)
+  {
+    ValveDescription v = laminar_valve();
+    const PilotFieldResult nozzle = nozzle_at_null(v, 40e-6), orifice = orifice_laminar(v);
+    v.pilot.field_outlet_radius *= 1.5;
+    v.pilot.field_plenum_size *= 1.5;
+    const PilotFieldResult nozzle_wide = nozzle_at_null(v, 40e-6), orifice_wide = orifice_laminar(v);
+    std::printf("outlet radius x1.5: C_dn %+.3f %%, F %+.3f %%; plenum x1.5: C_d %+.3f %%\n",
+                100 * (nozzle_wide.discharge_coefficient / nozzle.discharge_coefficient - 1),
+                100 * (nozzle_wide.flapper_force / nozzle.flapper_force - 1),
+                100 * (orifice_wide.discharge_coefficient / orifice.discharge_coefficient - 1));
+    EXPECT_LT(test::relative(nozzle_wide.discharge_coefficient, nozzle.discharge_coefficient), 0.005);
+    EXPECT_LT(test::relative(nozzle_wide.flapper_force, nozzle.flapper_force), 0.005);
+    EXPECT_LT(test::relative(orifice_wide.discharge_coefficient, orifice.discharge_coefficient), 0.005);
+  }
+
+  // A case that does not converge within the iteration limit becomes a flagged row (flag 2) that
+  // carries the reduced-order value, never a silent number; no-flow rows are exact limits (flag 3).
+  TEST(PilotFieldStage, UnconvergedCasesAreFlaggedRows)
+  {
+    ValveDescription v = test::valve({"Sweeps/Table temperatures=40, 120", "Sweeps/Drift temperatures=40, 120",
+                                      "Sweeps/Field orifice pressure fractions=0.5", "Sweeps/Field gap fractions=1",
+                                      "Sweeps/Field nozzle pressure fractions=0.5", "Flow solver/Maximum iterations=20",
+                                      "Output/Flow fields=none"});
+    const Table orifice = compute_fixed_orifice_field_table(v);
+    const Table nozzle = compute_nozzle_flapper_field_table(v);
+    const PilotClosedForms closed_forms(v, 40);
+    ASSERT_EQ(orifice.rows.size(), 4u); // per temperature: dp = 0 and the case
+    EXPECT_EQ(orifice.rows[0].back(), flags::limit);
+    EXPECT_EQ(orifice.rows[1].back(), flags::not_converged);
+    const double dp = orifice.rows[1][1];
+    EXPECT_DOUBLE_EQ(orifice.rows[1][3], closed_forms.fixed_orifice(dp).discharge_coefficient);
+    std::size_t flagged = 0;
+    for (const auto &row : nozzle.rows)
+      {
+        EXPECT_TRUE(row.back() == flags::limit || row.back() == flags::not_converged);
+        for (double x : row)
+          EXPECT_TRUE(std::isfinite(x));
+        flagged += row.back() == flags::not_converged;
+      }
+    EXPECT_EQ(flagged, 2u);
   }
 } // namespace servodrift::flow
