@@ -6,9 +6,9 @@
 // Five structured blocks (all quadrilaterals): plenum core (r < r0) and ring, bore, chamber core and
 // ring. Cells are graded towards the bore's edges and wall; `res' scales every count, and the bore
 // has 30 res cells across its radius.
-// Physical curves: inlet (the plenum's back face), outlet (the chamber's far face and its side: the
-// jet discharges into a large reservoir and entrains from it), wall (orifice plate faces, bore wall,
-// plenum side wall), axis.
+// Physical curves: inlet (the plenum's back face), outlet (the chamber's cylindrical side, the
+// passage on to the nozzles; entrainment comes back in through it from rest), wall (orifice plate
+// faces, bore wall, plenum side wall, the chamber's far face, on which the jet stagnates), axis.
 DefineConstant[
   r0 = {0.1125, Name "Parameters/r0"},  // bore radius D_0/2
   l = {0.50, Name "Parameters/l"},      // bore length l_0
