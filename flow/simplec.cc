@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <iostream>
 #include <set>
@@ -1150,6 +1151,8 @@ namespace servodrift::flow
             return false;
       return true;
     };
+    // the stall test: the smallest of the largest scaled residual in this window and the last
+    double window_best = std::numeric_limits<double>::infinity(), previous_window_best = window_best;
     for (unsigned int it = 1;; ++it)
       {
         Residuals r;
@@ -1194,12 +1197,24 @@ namespace servodrift::flow
         if (r.u < tolerance && r.v < tolerance && r.continuity < tolerance && r.k < tolerance && r.epsilon < tolerance &&
             settled)
           break;
-        if (it >= d.settings.max_iterations)
+        const unsigned int window = d.settings.stall_window;
+        bool stalled = false;
+        if (window > 0)
+          {
+            window_best = std::min(window_best, std::max({r.u, r.v, r.continuity, r.k, r.epsilon}));
+            if (it % window == 0)
+              {
+                stalled = window_best > 0.5 * previous_window_best;
+                previous_window_best = window_best;
+                window_best = std::numeric_limits<double>::infinity();
+              }
+          }
+        if (it >= d.settings.max_iterations || stalled)
           {
             if (!failure_output.empty())
               write_vtu(failure_output);
             throw NotConverged("flow: " + d.mesh.source + ": not converged in " + std::to_string(it) +
-                                     " iterations (residuals u " + format_number(r.u) + ", v " + format_number(r.v) +
+                               (stalled ? " iterations: stalled (residuals u " : " iterations (residuals u ") + format_number(r.u) + ", v " + format_number(r.v) +
                                      (d.turbulent ? ", k " + format_number(r.k) + ", epsilon " + format_number(r.epsilon) : "") +
                                      ", continuity " + format_number(r.continuity) + "; tolerance " +
                                      format_number(tolerance) + (settled ? "" : "; monitored quantities still changing") + ")");

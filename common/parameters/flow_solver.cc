@@ -29,6 +29,10 @@ namespace servodrift
                       "continuity fall below this. [1]");
     prm.declare_entry("Maximum iterations", "5000", Patterns::Integer(1, 10000000),
                       "SIMPLEC iterations; a run that has not converged by then fails. [1]");
+    prm.declare_entry("Stall window", "1000", Patterns::Integer(0, 10000000),
+                      "A run whose largest scaled residual has not fallen by half from one window of this "
+                      "many iterations to the next has stalled (a cycle, not a slow convergence) and fails "
+                      "then, without waiting for the iteration limit. 0: never. [1]");
     prm.declare_entry("Report interval", "0", Patterns::Integer(0, 10000000),
                       "Print the residuals every this many iterations on stderr (0: only at the end). [1]");
     prm.declare_entry("Monitor iterations", "50", Patterns::Integer(1, 100000),
@@ -76,6 +80,7 @@ namespace servodrift
                       m == "bicgstab-ilu" ? MomentumSolver::bicgstab_ilu : MomentumSolver::bicgstab_jacobi;
     tolerance = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Maximum iterations");
+    stall_window = prm.get_integer("Stall window");
     report_interval = prm.get_integer("Report interval");
     monitor_iterations = prm.get_integer("Monitor iterations");
     monitor_tolerance = prm.get_double("Monitor tolerance");
