@@ -65,11 +65,15 @@ namespace servodrift::laws
 
   SpringTubeGeometry spring_tube_geometry(const SpringTubeParameters &tube, const ThermalExpansion &alpha, double T)
   {
-    // E13: D, d, l all scale with 1 + alpha_s (T - T_ref)
+    // E13: D, d, l (and the flange and collar, one piece with the tube) all scale with 1 + alpha_s (T - T_ref)
     const double T_ref = tube.reference_temperature;
     return {expanded(tube.outer_diameter, alpha.spring_tube, T, T_ref),
             expanded(tube.inner_diameter, alpha.spring_tube, T, T_ref),
-            expanded(tube.length, alpha.spring_tube, T, T_ref)};
+            expanded(tube.length, alpha.spring_tube, T, T_ref),
+            expanded(tube.base_flange_diameter, alpha.spring_tube, T, T_ref),
+            expanded(tube.base_flange_height, alpha.spring_tube, T, T_ref),
+            expanded(tube.top_collar_diameter, alpha.spring_tube, T, T_ref),
+            expanded(tube.top_collar_height, alpha.spring_tube, T, T_ref)};
   }
 
   TorqueMotorGeometry torque_motor_geometry(const TorqueMotorParameters &m, const ThermalExpansion &alpha,

@@ -56,6 +56,10 @@ namespace servodrift::laws
     double outer_diameter; ///< D(T) [m]
     double inner_diameter; ///< d(T) [m]
     double length;         ///< l(T) [m]
+    double base_flange_diameter; ///< [m]
+    double base_flange_height;   ///< 0: no flange [m]
+    double top_collar_diameter;  ///< [m]
+    double top_collar_height;    ///< 0: no collar [m]
   };
   SpringTubeGeometry spring_tube_geometry(const SpringTubeParameters &tube, const ThermalExpansion &alpha,
                                           double T);

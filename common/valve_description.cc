@@ -16,6 +16,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 namespace servodrift
 {
@@ -517,6 +518,33 @@ namespace servodrift
       refuse("Spring tube/Inner diameter", "= " + format_number(st.inner_diameter) +
                                              " m must be below the outer diameter " +
                                              format_number(st.outer_diameter) + " m (wall thickness > 0)");
+    if (st.model_level == "field")
+      {
+        const std::string field = " for the field level (`Spring tube/Model level = field')";
+        if (!(st.inner_diameter > 0))
+          refuse("Spring tube/Inner diameter", "= " + format_number(st.inner_diameter) +
+                                                 " m must be > 0" + field +
+                                                 ": the n = 1 axisymmetric model needs a bore");
+        // a flange or collar of height > 0 must stand out of the tube, or there is nothing to mesh
+        for (const auto &[part, diameter, height] :
+             {std::tuple{"Base flange", st.base_flange_diameter, st.base_flange_height},
+              std::tuple{"Top collar", st.top_collar_diameter, st.top_collar_height}})
+          if (height > 0 && !(diameter > st.outer_diameter))
+            refuse(std::string("Spring tube/") + part + " diameter",
+                   "= " + format_number(diameter) + " m must exceed the outer diameter " +
+                     format_number(st.outer_diameter) + " m when its height is > 0" + field +
+                     " (set the height to 0 for none)");
+        const double radial_size = 0.5 * (st.outer_diameter - st.inner_diameter) /
+                                   (st.field_wall_layers * st.field_mesh_resolution);
+        for (const auto &[entry, height] : {std::pair{"Base flange height", st.base_flange_height},
+                                            std::pair{"Top collar height", st.top_collar_height}})
+          if (height > 0 && !(height > 0.05 * radial_size))
+            refuse(std::string("Spring tube/") + entry,
+                   "= " + format_number(height) + " m cannot be meshed: a height above 0 must be at least " +
+                     format_number(0.05 * radial_size) + " m (1/20 of the wall's element size)" + field);
+        if (st.field_wall_layers * st.field_mesh_resolution < 1)
+          refuse("Spring tube/Field mesh resolution", "x `Field wall layers' must give at least one layer");
+      }
     for (double T : sw.table_temperatures)
       if (!(laws::youngs_modulus(st, T) > 0))
         refuse("Spring tube/Modulus temperature coefficient", "makes E(T) <= 0 at " + format_number(T) + " degC (E12)");

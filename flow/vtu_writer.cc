@@ -1,6 +1,6 @@
 #include "flow/vtu_writer.h"
 
-#include "common/error.h"
+#include "common/vtu_output.h"
 
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -10,11 +10,6 @@
 #include <vtkPoints.h>
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
-#include <vtkXMLUnstructuredGridWriter.h>
-
-#include <unistd.h>
-
-#include <cstdio>
 
 namespace servodrift::flow
 {
@@ -77,20 +72,6 @@ namespace servodrift::flow
       names->InsertNextValue(n);
     grid->GetFieldData()->AddArray(names);
 
-    const std::string temporary = filename + ".tmp." + std::to_string(::getpid()) + ".vtu";
-    vtkNew<vtkXMLUnstructuredGridWriter> writer;
-    writer->SetFileName(temporary.c_str());
-    writer->SetInputData(grid);
-    writer->SetDataModeToBinary();
-    if (writer->Write() != 1)
-      {
-        std::remove(temporary.c_str());
-        throw InputError(filename + ": VTK could not write the file");
-      }
-    if (std::rename(temporary.c_str(), filename.c_str()) != 0)
-      {
-        std::remove(temporary.c_str());
-        throw InputError(filename + ": cannot replace");
-      }
+    write_vtu_atomically(filename, grid);
   }
 } // namespace servodrift::flow

@@ -15,6 +15,7 @@ namespace servodrift::structure
     const double D = geometry.outer_diameter, d = geometry.inner_diameter;
     b.second_moment = units::pi * (std::pow(D, 4) - std::pow(d, 4)) / 64.0; // E11
     b.length = geometry.length;
+    b.outer_radius = D / 2;
     b.rotational_stiffness = b.youngs_modulus * b.second_moment / b.length; // E11: K_a = E I/l
     return b;
   }

@@ -10,6 +10,7 @@ namespace servodrift::structure
     double youngs_modulus;        ///< E(T) (E12) [Pa]
     double second_moment;         ///< I = pi (D^4 - d^4)/64 [m^4]
     double length;                ///< l(T) [m]
+    double outer_radius;          ///< D(T)/2, the outer fibre [m]
     double rotational_stiffness;  ///< K_a = E I/l (E11) [N*m/rad]
 
     /// Tip rotation and deflection under an end moment M and shear V (1.6):

@@ -9,9 +9,10 @@ namespace servodrift
   void SpringTubeParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection(subsection);
-    prm.declare_entry("Model level", "reduced-order", Patterns::Selection("reduced-order"),
+    prm.declare_entry("Model level", "field", Patterns::Selection("reduced-order|field"),
                       "Which model computes the spring_tube table: 'reduced-order' is the beam closed "
-                      "form E11-E13 (D13). [-]");
+                      "form E11-E13 (D13); 'field' is linear elasticity of the tube, axisymmetric with "
+                      "Fourier harmonic n = 1, clamped base, rigid top (D12, model.md 4.3). [-]");
     prm.declare_entry("Young's modulus", "128e9", Patterns::Double(0, 1e13),
                       "Young's modulus E_ref of the tube (BeCu QBe2) at the tube's reference "
                       "temperature (E12). [Pa]");
@@ -31,6 +32,30 @@ namespace servodrift
                       "Length l of the thin-walled section (E11). [m]");
     prm.declare_entry("Yield strength", "1.0e9", Patterns::Double(0, 1e11),
                       "Yield strength of the age-hardened BeCu, for the stress margin. [Pa]");
+    prm.declare_entry("Base flange diameter", "0", Patterns::Double(0, 1),
+                      "Outer diameter of the base flange, one piece with the tube (field level; used "
+                      "when the flange height is above 0; must exceed the outer diameter D). [m]");
+    prm.declare_entry("Base flange height", "0", Patterns::Double(0, 1),
+                      "Height of the base flange below the thin section; its bottom face is clamped "
+                      "(field level; 0: no flange, the thin section is clamped at its base). [m]");
+    prm.declare_entry("Top collar diameter", "0", Patterns::Double(0, 1),
+                      "Outer diameter of the top collar, one piece with the tube (field level; used "
+                      "when the collar height is above 0; must exceed the outer diameter D). [m]");
+    prm.declare_entry("Top collar height", "0", Patterns::Double(0, 1),
+                      "Height of the top collar above the thin section; its top face is the rigid "
+                      "armature seat (field level; 0: no collar, the thin section's top is rigid). [m]");
+    prm.declare_entry("Field element degree", "2", Patterns::Integer(1, 4),
+                      "Degree of the FE_Q elements of the displacement harmonics (field level). Degree 1 "
+                      "locks in bending of the thin wall; 2 or more. [1]");
+    prm.declare_entry("Field wall layers", "4", Patterns::Integer(1, 64),
+                      "Element layers through the tube wall at resolution 1 (field level; issue 6 asks "
+                      "for at least 3, or higher-order elements). [1]");
+    prm.declare_entry("Field aspect ratio", "4", Patterns::Double(0.5, 20),
+                      "Axial over radial element size in the thin wall (field level); flanges and "
+                      "collar use the same sizes. [1]");
+    prm.declare_entry("Field mesh resolution", "1", Patterns::Double(0.25, 16),
+                      "Scales the field model's element counts (wall layers x resolution, element "
+                      "sizes / resolution), for convergence studies. [1]");
     prm.leave_subsection();
   }
 
@@ -46,6 +71,14 @@ namespace servodrift
     inner_diameter = prm.get_double("Inner diameter");
     length = prm.get_double("Length");
     yield_strength = prm.get_double("Yield strength");
+    base_flange_diameter = prm.get_double("Base flange diameter");
+    base_flange_height = prm.get_double("Base flange height");
+    top_collar_diameter = prm.get_double("Top collar diameter");
+    top_collar_height = prm.get_double("Top collar height");
+    field_element_degree = prm.get_integer("Field element degree");
+    field_wall_layers = prm.get_integer("Field wall layers");
+    field_aspect_ratio = prm.get_double("Field aspect ratio");
+    field_mesh_resolution = prm.get_double("Field mesh resolution");
     prm.leave_subsection();
   }
 } // namespace servodrift

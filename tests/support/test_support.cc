@@ -22,8 +22,10 @@ namespace servodrift::test
 
   ValveDescription valve(std::vector<std::string> overrides)
   {
-    // the reduced-order torque motor unless a test asks for the field level (seconds, not minutes)
+    // the reduced-order torque motor and spring tube unless a test asks for the field level (the
+    // system-model tests compare with model.md's closed-form figures)
     overrides.insert(overrides.begin(), "Torque motor/Model level=reduced-order");
+    overrides.insert(overrides.begin(), "Spring tube/Model level=reduced-order");
     overrides.push_back("Output/Directory=" + temporary_directory());
     overrides.push_back("Output/Progress=none");
     return load_valve_description("", overrides);

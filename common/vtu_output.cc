@@ -1,0 +1,33 @@
+#include "common/vtu_output.h"
+
+#include "common/error.h"
+
+#include <vtkNew.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace servodrift
+{
+  void write_vtu_atomically(const std::string &filename, vtkUnstructuredGrid *grid)
+  {
+    const std::string temporary = filename + ".tmp." + std::to_string(::getpid()) + ".vtu";
+    vtkNew<vtkXMLUnstructuredGridWriter> writer;
+    writer->SetFileName(temporary.c_str());
+    writer->SetInputData(grid);
+    writer->SetDataModeToBinary();
+    if (writer->Write() != 1)
+      {
+        std::remove(temporary.c_str());
+        throw InputError(filename + ": VTK could not write the file");
+      }
+    if (std::rename(temporary.c_str(), filename.c_str()) != 0)
+      {
+        std::remove(temporary.c_str());
+        throw InputError(filename + ": cannot replace");
+      }
+  }
+} // namespace servodrift

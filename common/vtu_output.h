@@ -1,0 +1,12 @@
+#pragma once
+// Writing a VTK unstructured grid as a VTU file (ParaView) without ever leaving a half-written one.
+#include <string>
+
+class vtkUnstructuredGrid;
+
+namespace servodrift
+{
+  /// Writes `grid' (binary VTU) to a temporary file beside `filename', then renames it. Throws
+  /// InputError naming the file if VTK cannot write it.
+  void write_vtu_atomically(const std::string &filename, vtkUnstructuredGrid *grid);
+} // namespace servodrift
