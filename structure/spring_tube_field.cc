@@ -178,7 +178,7 @@ namespace servodrift::structure
     void assemble_system();
     Vector<double> solve(const std::map<types::global_dof_index, double> &top_values);
 
-    /// Evaluates `f(point, strain)' at the given quadrature of every cell for the displacement u.
+    /// Calls `f(cell, q, point, strain)' at each point of `quadrature' in every cell, for the displacement u.
     template <typename F>
     void for_each_point(const Vector<double> &u, const Quadrature<2> &quadrature, F &&f) const
     {
