@@ -185,14 +185,21 @@ namespace servodrift
       {
         // E26: C_d0 = c1 Re^3 + c2 Re^2 + c3 Re + c4 over the rows with flow
         const auto flowing = [&](const std::vector<double> &r) { return r[t.column_index("reynolds_number")] > 0; };
-        PolynomialFit e26 = fit_polynomial(axes_of(t, {"reynolds_number"}, flowing),
-                                           values_of(t, "discharge_coefficient", flowing), {{0}, {1}, {2}, {3}});
-        e26.name = "E26 fixed-orifice discharge coefficient C_d0(Re_0), cubic";
-        e26.source = "fixed_orifice.csv";
-        e26.response = "discharge_coefficient[1]";
-        e26.variables = {"reynolds_number[1]"};
-        e26.note = "paper: c = (4.196e-13, -1.226e-8, 1.202e-4, 0.3875) for Re^3, Re^2, Re, 1";
-        fits.push_back(e26);
+        try
+          {
+            PolynomialFit e26 = fit_polynomial(axes_of(t, {"reynolds_number"}, flowing),
+                                               values_of(t, "discharge_coefficient", flowing), {{0}, {1}, {2}, {3}});
+            e26.name = "E26 fixed-orifice discharge coefficient C_d0(Re_0), cubic";
+            e26.source = "fixed_orifice.csv";
+            e26.response = "discharge_coefficient[1]";
+            e26.variables = {"reynolds_number[1]"};
+            e26.note = "paper: c = (4.196e-13, -1.226e-8, 1.202e-4, 0.3875) for Re^3, Re^2, Re, 1";
+            fits.push_back(e26);
+          }
+        catch (const std::invalid_argument &)
+          {
+            // fewer than four distinct Reynolds numbers with flow (a reduced field sweep): no E26 fit
+          }
         fits.push_back(general_fit(t, "discharge_coefficient", {"temperature", "pressure_difference"},
                                    valve.fits.fixed_orifice_degrees, flowing));
       }

@@ -91,3 +91,22 @@ TEST(Fitting, JsonCarriesTermsAndValidity)
   EXPECT_NE(json.find("\"validity\""), std::string::npos);
   EXPECT_NE(json.find("\"r_squared\": 1"), std::string::npos);
 }
+
+#include "common/stage_output.h"
+#include "common/table.h"
+#include "tests/support/test_support.h"
+
+TEST(TableFits, TooFewPointsLeaveOutTheFitInsteadOfFailing)
+{
+  // A reduced field sweep (one orifice pressure difference at two temperatures) has two Reynolds
+  // numbers with flow: the cubic E26 is left out of fits.json, the general fit's degrees are capped,
+  // and nothing throws (it used to end the run after the tables were written).
+  Table t(schemas::fixed_orifice);
+  t.rows = {{40, 0, 0, 0.778, 0, 3}, {40, 10.3e6, 3.4e-6, 0.753, 2504, 0},
+            {80, 0, 0, 0.793, 0, 3}, {80, 10.3e6, 3.5e-6, 0.765, 5235, 0}};
+  std::vector<PolynomialFit> fits;
+  ASSERT_NO_THROW(fits = fits_of_table(t, test::valve()));
+  ASSERT_EQ(fits.size(), 1u);
+  EXPECT_NE(fits[0].name.find("full polynomial"), std::string::npos);
+  EXPECT_NE(fits[0].note.find("capped"), std::string::npos);
+}
