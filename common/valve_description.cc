@@ -525,6 +525,9 @@ namespace servodrift
           refuse("Spring tube/Inner diameter", "= " + format_number(st.inner_diameter) +
                                                  " m must be > 0" + field +
                                                  ": the n = 1 axisymmetric model needs a bore");
+        if (!(st.poisson_ratio < 0.5))
+          refuse("Spring tube/Poisson ratio", "= " + format_number(st.poisson_ratio) + " must be below 0.5" + field +
+                                                " (Lame's lambda is infinite for an incompressible solid)");
         // a flange or collar of height > 0 must stand out of the tube, or there is nothing to mesh
         for (const auto &[part, diameter, height] :
              {std::tuple{"Base flange", st.base_flange_diameter, st.base_flange_height},
