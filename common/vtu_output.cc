@@ -1,6 +1,7 @@
 #include "common/vtu_output.h"
 
 #include "common/error.h"
+#include "common/output_files.h"
 
 #include <vtkNew.h>
 #include <vtkUnstructuredGrid.h>
@@ -29,5 +30,14 @@ namespace servodrift
         std::remove(temporary.c_str());
         throw InputError(filename + ": cannot replace");
       }
+  }
+
+  void write_pvd_atomically(const std::string &filename, const std::vector<std::pair<double, std::string>> &datasets)
+  {
+    std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+    for (const auto &[timestep, file] : datasets)
+      pvd += "    <DataSet timestep=\"" + format_cell(timestep) + "\" part=\"0\" file=\"" + file + "\"/>\n";
+    pvd += "  </Collection>\n</VTKFile>\n";
+    write_file_atomically(filename, pvd);
   }
 } // namespace servodrift

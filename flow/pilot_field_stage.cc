@@ -3,6 +3,7 @@
 #include "common/csv.h"
 #include "common/error.h"
 #include "common/output_files.h"
+#include "common/vtu_output.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
 #include "common/units.h"
@@ -352,8 +353,7 @@ namespace servodrift::flow
                        "iterations[1]",
                        "wall_time[s]",
                        "flag[1]"};
-        std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
-        int k = 0;
+        std::vector<std::pair<double, std::string>> datasets;
         for (const auto &r : records)
           {
             const bool converged = r[flag] == flags::computed;
@@ -367,13 +367,11 @@ namespace servodrift::flow
                                 cell(r[cavitating], converged), cell(r[max_wall_y_plus], converged),
                                 cell(r[iterations], converged), cell(r[wall_time]), cell(r[flag])});
             if (converged && writes_fields(valve, r[temperature]))
-              pvd += "    <DataSet timestep=\"" + std::to_string(k++) + "\" part=\"0\" file=\"" +
-                     vtu_name(g, r[temperature], r[gap], r[pressure_difference]) + "\"/>\n";
+              datasets.emplace_back(datasets.size(), vtu_name(g, r[temperature], r[gap], r[pressure_difference]));
           }
-        pvd += "  </Collection>\n</VTKFile>\n";
         write_file_atomically(flow_directory(valve) + "/" + name + "_cases.csv", doc.text());
-        if (k > 0)
-          write_file_atomically(flow_directory(valve) + "/" + name + ".pvd", pvd);
+        if (!datasets.empty())
+          write_pvd_atomically(flow_directory(valve) + "/" + name + ".pvd", datasets);
       });
     }
 

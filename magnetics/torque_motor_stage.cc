@@ -7,6 +7,7 @@
 #include "common/sweep.h"
 #include "common/units.h"
 #include "common/version.h"
+#include "common/vtu_output.h"
 #include "magnetics/reduced_order_circuit.h"
 #include "magnetics/torque_motor_field.h"
 
@@ -141,17 +142,14 @@ namespace servodrift::magnetics
       write_file_atomically(dir + "/field_summary.csv", doc.text());
 
       // ParaView collection of the VTU files written
-      std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
-      int k = 0;
+      std::vector<std::pair<double, std::string>> datasets;
       for (double T : valve.sweeps.table_temperatures)
         for (double theta : valve.sweeps.motor_angles)
           for (double i : valve.sweeps.motor_currents)
             if (wanted(valve, T, theta, i))
-              pvd += "    <DataSet timestep=\"" + std::to_string(k++) + "\" part=\"0\" file=\"" +
-                     field_file_name(T, theta, i) + "\"/>\n";
-      pvd += "  </Collection>\n</VTKFile>\n";
-      if (k > 0)
-        write_file_atomically(dir + "/fields.pvd", pvd);
+              datasets.emplace_back(datasets.size(), field_file_name(T, theta, i));
+      if (!datasets.empty())
+        write_pvd_atomically(dir + "/fields.pvd", datasets);
     }
   } // namespace
 

@@ -6,6 +6,7 @@
 #include "common/sweep.h"
 #include "common/thermal_laws.h"
 #include "common/version.h"
+#include "common/vtu_output.h"
 #include "structure/spring_tube_beam.h"
 #include "structure/spring_tube_field.h"
 
@@ -19,7 +20,8 @@ namespace servodrift::structure
   {
     SpringTubeFieldOptions o;
     o.element_degree = tube.field_element_degree;
-    o.wall_layers = std::max(1u, static_cast<unsigned int>(std::lround(tube.field_wall_layers * tube.field_mesh_resolution)));
+    // validate() ensures layers x resolution >= 1
+    o.wall_layers = static_cast<unsigned int>(std::lround(tube.field_wall_layers * tube.field_mesh_resolution));
     o.aspect_ratio = tube.field_aspect_ratio;
     return o;
   }
@@ -139,11 +141,10 @@ namespace servodrift::structure
       prepare_output_directory(dir);
       write_file_atomically(dir + "/field_summary.csv", doc.text());
 
-      std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+      std::vector<std::pair<double, std::string>> datasets;
       for (const auto &r : summary)
-        pvd += "    <DataSet timestep=\"" + format_cell(r[0]) + "\" part=\"0\" file=\"" + field_file_name(r[0]) + "\"/>\n";
-      pvd += "  </Collection>\n</VTKFile>\n";
-      write_file_atomically(dir + "/spring_tube.pvd", pvd);
+        datasets.emplace_back(r[0], field_file_name(r[0]));
+      write_pvd_atomically(dir + "/spring_tube.pvd", datasets);
     }
   } // namespace
 
