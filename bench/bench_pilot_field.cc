@@ -6,13 +6,16 @@
 // thousand cells band is reached near 2.5). Prints cells, iterations, wall time, time per
 // iteration, C_dn and force. Not a test; the whole sweep is timed by `servodrift flow' (see
 // doc/performance.md).
-//   OMP_THREAD_LIMIT=1 build/bench/bench_pilot_field [largest resolution: 1|2|3]
+//   OMP_THREAD_LIMIT=1 build/bench/bench_pilot_field [largest resolution: 1|2|3] [parameter=value ...]
+// (extra arguments are `--set' entries, e.g. 'Flow solver/Report interval=100' for the residual history)
 #include "common/valve_description.h"
 #include "flow/pilot_field.h"
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
+#include <vector>
 
 using namespace servodrift;
 using namespace servodrift::flow;
@@ -20,7 +23,10 @@ using namespace servodrift::flow;
 int main(int argc, char **argv)
 {
   const double largest = argc > 1 ? std::atof(argv[1]) : 2;
-  const ValveDescription valve = load_valve_description("", {"Output/Progress=none", "Flow solver/Maximum iterations=20000"});
+  std::vector<std::string> settings{"Output/Progress=none", "Flow solver/Maximum iterations=20000"};
+  for (int a = 2; a < argc; ++a)
+    settings.emplace_back(argv[a]);
+  const ValveDescription valve = load_valve_description("", settings);
   std::printf("RV-1 nozzle-flapper at its null (40 degC, h 40 um, dp 10.4 MPa), from rest, tolerance %.0e\n",
               valve.flow_solver.tolerance);
   std::printf("%-10s %10s %8s %11s %10s %13s %8s %9s\n", "model", "resolution", "cells", "iterations", "wall [s]",

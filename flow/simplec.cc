@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "common/units.h"
+#include "flow/anderson_acceleration.h"
 #include "flow/vtu_writer.h"
 
 #include <Eigen/CholmodSupport>
@@ -210,6 +211,14 @@ namespace servodrift::flow
     std::vector<double> rhie_chow_fluxes() const;
     double pressure_correction(std::vector<double> &flux_star);
     Residuals iterate(bool first);
+
+    // Anderson acceleration of the iteration (`Acceleration depth'): the state the next iteration
+    // starts from, packed into one vector with each field divided by its own scale (set at a restart,
+    // so that the least-squares problem weighs velocity, pressure and turbulence alike).
+    std::vector<std::vector<double> *> accelerated_fields();
+    std::vector<double> field_scales;
+    Eigen::VectorXd pack_state();
+    void unpack_state(const Eigen::VectorXd &x);
   };
 
   SimplecSolver::Implementation::Implementation(const FvMesh &mesh_, const FluidProperties &fluid_,
@@ -784,16 +793,18 @@ namespace servodrift::flow
     solve_momentum(matrix_v, bv, v, direct_v, first);
     update_boundary_values();
     std::vector<double> F = rhie_chow_fluxes();
-    // throughput of a pressure-driven flow: its current inflow
-    double inflow = 0, circulation = 0;
+    // throughput of a pressure-driven flow: its current inflow or outflow, whichever is larger (from
+    // rest, one of them can pass through nearly zero while the other has built up, and a residual
+    // relative to it would read as a divergence)
+    double inflow = 0, outflow = 0, circulation = 0;
     for (std::size_t f = 0; f < mesh.n_faces(); ++f)
       if (mesh.neighbour[f] < 0)
-        inflow += std::max(0.0, -F[f]);
+        inflow += std::max(0.0, -F[f]), outflow += std::max(0.0, F[f]);
       else
         circulation += std::abs(F[f]);
-    const double throughput = reference_flux > 0 ? reference_flux :
-                              inflow > 0         ? inflow :
-                                                   circulation / std::sqrt(double(n)); // closed domain
+    const double throughput = reference_flux > 0               ? reference_flux :
+                              std::max(inflow, outflow) > 0 ? std::max(inflow, outflow) :
+                                                              circulation / std::sqrt(double(n)); // closed domain
     const double imbalance = pressure_correction(F);
     flux = F;
     if (cavitation)
@@ -1120,6 +1131,75 @@ namespace servodrift::flow
       }
   }
 
+  std::vector<std::vector<double> *> SimplecSolver::Implementation::accelerated_fields()
+  {
+    std::vector<std::vector<double> *> fields{&u, &v, &p, &flux};
+    if (turbulent)
+      fields.insert(fields.end(), {&k, &epsilon, &mu_t});
+    if (cavitation)
+      fields.push_back(&liquid_fraction);
+    return fields;
+  }
+
+  Eigen::VectorXd SimplecSolver::Implementation::pack_state()
+  {
+    const auto fields = accelerated_fields();
+    if (field_scales.size() != fields.size())
+      {
+        field_scales.clear();
+        for (const auto *field : fields)
+          {
+            double largest = 0;
+            for (double value : *field)
+              largest = std::max(largest, std::abs(value));
+            field_scales.push_back(largest > 0 ? largest : 1.0);
+          }
+      }
+    std::size_t size = 0;
+    for (const auto *field : fields)
+      size += field->size();
+    Eigen::VectorXd x(size);
+    std::size_t at = 0;
+    for (std::size_t j = 0; j < fields.size(); ++j)
+      for (double value : *fields[j])
+        x[at++] = value / field_scales[j];
+    return x;
+  }
+
+  /// Writes an accelerated state back, bounded (k, epsilon > 0, mu_t >= 0, 0 <= gamma <= 1), with
+  /// what depends on it (mass fluxes, face viscosities, pressure boundaries' inflow speeds).
+  void SimplecSolver::Implementation::unpack_state(const Eigen::VectorXd &x)
+  {
+    const auto fields = accelerated_fields();
+    std::vector<double> k_before, epsilon_before;
+    if (turbulent)
+      k_before = k, epsilon_before = epsilon;
+    std::size_t at = 0;
+    for (std::size_t j = 0; j < fields.size(); ++j)
+      for (double &value : *fields[j])
+        value = x[at++] * field_scales[j];
+    if (turbulent)
+      for (std::size_t c = 0; c < mesh.n_cells(); ++c)
+        {
+          // a combination may overshoot below zero where k or epsilon is small: keep the positive
+          // value it came from, scaled down at most tenfold
+          k[c] = std::max(k[c], 0.1 * k_before[c]);
+          epsilon[c] = std::max(epsilon[c], 0.1 * epsilon_before[c]);
+          mu_t[c] = std::max(mu_t[c], 0.0);
+        }
+    if (cavitation)
+      {
+        for (double &gamma : liquid_fraction)
+          gamma = std::clamp(gamma, 0.0, 1.0);
+        update_mass_flux();
+      }
+    if (turbulent)
+      update_face_viscosity();
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      if (mesh.neighbour[f] < 0 && is_pressure_boundary(face_kind[f]))
+        inflow_speed[f] = std::min(flux[f], 0.0) / (fluid.density * mesh.face_area[f]);
+  }
+
   // ---- public interface ----------------------------------------------------------------------
 
   SimplecSolver::SimplecSolver(const FvMesh &mesh, const FluidProperties &fluid,
@@ -1153,6 +1233,11 @@ namespace servodrift::flow
     };
     // the stall test: the smallest of the largest scaled residual in this window and the last
     double window_best = std::numeric_limits<double>::infinity(), previous_window_best = window_best;
+    std::unique_ptr<AndersonAcceleration> anderson;
+    if (d.settings.acceleration_depth > 0)
+      anderson = std::make_unique<AndersonAcceleration>(d.settings.acceleration_depth);
+    Eigen::VectorXd accelerated_start; // the state the last iteration started from (with acceleration)
+    double smallest_change = std::numeric_limits<double>::infinity();
     for (unsigned int it = 1;; ++it)
       {
         Residuals r;
@@ -1197,6 +1282,31 @@ namespace servodrift::flow
         if (r.u < tolerance && r.v < tolerance && r.continuity < tolerance && r.k < tolerance && r.epsilon < tolerance &&
             settled)
           break;
+        if (anderson)
+          {
+            const double largest = std::max({r.u, r.v, r.continuity, r.k, r.epsilon});
+            if (largest < d.settings.acceleration_start)
+              {
+                const Eigen::VectorXd g = d.pack_state();
+                if (accelerated_start.size() == g.size())
+                  {
+                    const Eigen::VectorXd next = anderson->next(accelerated_start, g);
+                    // a combination that made the change grow tenfold has left the region where the
+                    // iteration is nearly linear: start the history again from plain SIMPLEC
+                    smallest_change = std::min(smallest_change, anderson->change_norm());
+                    if (anderson->change_norm() > 10 * smallest_change)
+                      anderson->restart(), smallest_change = std::numeric_limits<double>::infinity(),
+                                           accelerated_start = g;
+                    else
+                      d.unpack_state(next), accelerated_start = next;
+                  }
+                else
+                  accelerated_start = g;
+              }
+            else if (accelerated_start.size() > 0)
+              anderson->restart(), accelerated_start.resize(0), d.field_scales.clear(),
+                smallest_change = std::numeric_limits<double>::infinity();
+          }
         const unsigned int window = d.settings.stall_window;
         bool stalled = false;
         if (window > 0)

@@ -66,6 +66,13 @@ namespace servodrift
                       "is strong (the orifice's sharp entry, the jet's stagnation on the flapper); without it "
                       "the standard model's production runs away there. 0 turns it off (the textbook "
                       "standard model). [1]");
+    prm.declare_entry("Acceleration depth", "10", Patterns::Integer(0, 50),
+                      "Anderson acceleration of the SIMPLEC iteration: each new iterate is the combination of "
+                      "the last this many SIMPLEC updates whose change is smallest in the least-squares sense "
+                      "(the fixed point is the same; only the path to it changes). 0: plain SIMPLEC. [1]");
+    prm.declare_entry("Acceleration start", "1e-2", Patterns::Double(0, 1e10),
+                      "Anderson acceleration begins once the largest scaled residual is below this (the "
+                      "first iterations from rest are far from the linear convergence it accelerates). [1]");
     prm.leave_subsection();
   }
 
@@ -92,6 +99,8 @@ namespace servodrift
     turbulent_viscosity_relaxation = prm.get_double("Turbulent viscosity relaxation");
     realizability_coefficient = prm.get_double("Realizability coefficient");
     vapour_density_ratio = prm.get_double("Vapour density ratio");
+    acceleration_depth = prm.get_integer("Acceleration depth");
+    acceleration_start = prm.get_double("Acceleration start");
     prm.leave_subsection();
   }
 } // namespace servodrift

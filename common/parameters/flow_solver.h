@@ -26,6 +26,8 @@ namespace servodrift
     double turbulent_viscosity_relaxation; ///< under-relaxation of mu_t [1]
     double vapour_density_ratio;    ///< cavitation: vapour over liquid density in the mixture [1]
     double realizability_coefficient; ///< Durbin's time-scale bound alpha (two-layer k-epsilon; 0: off) [1]
+    unsigned int acceleration_depth;  ///< Anderson acceleration: iterates kept (0: plain SIMPLEC) [1]
+    double acceleration_start;        ///< Anderson acceleration: from this largest scaled residual down [1]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(dealii::ParameterHandler &prm);
