@@ -48,8 +48,8 @@ namespace servodrift::flow
     // gamma = argmin |f - dF gamma| by the normal equations dF^T dF gamma = dF^T f: the Gram matrix
     // costs one column of dot products per call (a QR of the tall dF would cost m times more, as much
     // as a third of a SIMPLEC iteration). Nearly dependent columns (an iteration that has almost
-    // converged in some direction) are kept from amplifying by a small Tikhonov term and by the
-    // pseudo-inverse of the eigen-decomposition, which drops directions below 1e-12 of the largest.
+    // converged in some direction) are kept from amplifying by the pseudo-inverse of the Gram
+    // matrix's eigen-decomposition, which drops directions below 1e-12 of the largest eigenvalue.
     Eigen::VectorXd rhs(m);
     for (Eigen::Index j = 0; j < m; ++j)
       rhs[j] = change_differences[std::size_t(j)].dot(f);

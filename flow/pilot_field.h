@@ -45,6 +45,7 @@ namespace servodrift::flow
     bool cavitating = false;
     double max_wall_y_plus = 0;           ///< largest y+ of a wall-adjacent cell centre [1]
     unsigned int iterations = 0;          ///< SIMPLEC iterations of this solve (start-up included)
+    unsigned int coarse_mesh_iterations = 0; ///< grid sequencing: iterations on the coarser meshes first
     FlowSolverParameters::Turbulence turbulence = FlowSolverParameters::Turbulence::laminar;
   };
 

@@ -1397,7 +1397,8 @@ namespace servodrift::flow
   void SimplecSolver::set_fields(const FlowFields &o)
   {
     auto &d = *impl;
-    if (o.u.size() != d.mesh.n_cells() || o.flux.size() != d.mesh.n_faces())
+    const bool with_fluxes = !o.flux.empty();
+    if (o.u.size() != d.mesh.n_cells() || (with_fluxes && o.flux.size() != d.mesh.n_faces()))
       throw std::invalid_argument("flow: " + d.mesh.source + ": cannot start from the fields of a different mesh");
     d.u = o.u, d.v = o.v, d.p = o.p;
     for (const auto &[name, pressure] : o.boundary_pressures)
@@ -1415,10 +1416,27 @@ namespace servodrift::flow
             std::fill(d.mu_t.begin(), d.mu_t.end(), 0.0);
         d.update_face_viscosity();
       }
-    // the face fluxes scale with the face areas of this mesh (same topology, other dimensions)
     for (std::size_t f = 0; f < d.mesh.n_faces(); ++f)
-      if (d.face_kind[f] != Kind::velocity_inlet || d.mesh.neighbour[f] >= 0)
-        d.flux[f] = o.flux[f] * d.mesh.face_area[f] / o.face_area[f] * d.fluid.density / o.density;
+      {
+        if (d.face_kind[f] == Kind::velocity_inlet && d.mesh.neighbour[f] < 0)
+          continue; // fixed by its condition
+        if (with_fluxes) // the face fluxes scale with the face areas of this mesh (same topology, other dimensions)
+          d.flux[f] = o.flux[f] * d.mesh.face_area[f] / o.face_area[f] * d.fluid.density / o.density;
+        else // fields carried from another mesh (transfer_fields): fluxes of the face velocities
+          {
+            const unsigned int P = d.mesh.owner[f];
+            Vector2 u_f(d.u[P], d.v[P]);
+            if (d.mesh.neighbour[f] >= 0)
+              {
+                const unsigned int N = d.mesh.neighbour[f];
+                const double w = d.mesh.face_weight(f);
+                u_f = w * u_f + (1 - w) * Vector2(d.u[N], d.v[N]);
+              }
+            else if (!is_pressure_boundary(d.face_kind[f]))
+              u_f.setZero(); // walls, axis, symmetry
+            d.flux[f] = d.fluid.density * u_f.dot(d.mesh.face_normal[f]) * d.mesh.face_area[f];
+          }
+      }
     if (o.liquid_fraction.size() == d.mesh.n_cells())
       d.liquid_fraction = o.liquid_fraction, d.cavitating = o.cavitating;
     else

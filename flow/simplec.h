@@ -120,7 +120,8 @@ namespace servodrift::flow
     std::vector<double> liquid_fraction() const;
 
     /// The fields as they are, and a start from fields of a mesh of the same topology (see
-    /// initialize_from).
+    /// initialize_from), or from fields carried from another mesh of the domain without their
+    /// fluxes (transfer_fields, grid sequencing), whose fluxes are then those of the face velocities.
     FlowFields fields() const;
     void set_fields(const FlowFields &fields);
 

@@ -37,6 +37,11 @@ namespace servodrift
                       "Field level: multiplies every cell count of meshes/fixed_orifice.geo (30 cells "
                       "across the bore radius at 1) and meshes/nozzle_flapper.geo (20 across the gap "
                       "at 1). [1]");
+    prm.declare_entry("Field grid sequencing", "true", Patterns::Bool(),
+                      "Field level: a case that starts from rest on a mesh of resolution 1.5 or finer is "
+                      "first solved on the mesh of half that resolution and starts from those fields "
+                      "(fewer, cheaper iterations; the answer is the fine mesh's). false: the laminar "
+                      "start-up on the fine mesh itself. [-]");
     prm.declare_entry("Field plenum size", "6", Patterns::Double(2, 100),
                       "Field level: radius and length of the fixed orifice's upstream plenum, in bore "
                       "radii D_0/2. [1]");
@@ -100,6 +105,7 @@ namespace servodrift
     nozzle_discharge_coefficient = prm.get_double("Nozzle discharge coefficient");
     control_cavity_volume = prm.get_double("Control cavity volume");
     field_resolution = prm.get_double("Field mesh resolution");
+    field_grid_sequencing = prm.get_bool("Field grid sequencing");
     field_plenum_size = prm.get_double("Field plenum size");
     field_chamber_length = prm.get_double("Field chamber length");
     field_outlet_radius = prm.get_double("Field outlet radius");

@@ -25,6 +25,7 @@ namespace servodrift
     enum class FlapperForceLaw { momentum, paper_table };    ///< E23 or section 3 item 10 (D2)
     // field level (meshes/fixed_orifice.geo, meshes/nozzle_flapper.geo)
     double field_resolution;        ///< multiplies every cell count [1]
+    bool field_grid_sequencing;     ///< a fine case from rest starts from the half-resolution solution
     double field_plenum_size;       ///< orifice plenum radius and length / bore radius [1]
     double field_chamber_length;    ///< orifice downstream chamber length / bore radius [1]
     double field_outlet_radius;     ///< nozzle-flapper outlet radius / land radius [1]
