@@ -25,7 +25,7 @@ namespace servodrift::flow
       throw std::invalid_argument("flow: transfer_fields: the fields are not those of " + from.source);
     // the source cell centres in VTK's static point locator (a uniform bucket grid built once)
     vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
+    points->SetDataTypeToDouble(); // VTK's default float would blur the micrometre cells of the gap
     points->SetNumberOfPoints(vtkIdType(from.n_cells()));
     for (std::size_t c = 0; c < from.n_cells(); ++c)
       points->SetPoint(vtkIdType(c), from.cell_center[c].x(), from.cell_center[c].y(), 0.0);

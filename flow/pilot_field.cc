@@ -38,9 +38,9 @@ namespace servodrift::flow
     /// cavitating case's C_dn by 0.1 % (the vapour region remembers the path).
     constexpr double start_up_tolerance = 1e-3;
     /// Grid sequencing (`Pilot stage/Field grid sequencing'): a case at rest on a mesh of this
-    /// resolution or finer is first solved on the
-    /// mesh of half its resolution (a quarter of the cells, itself sequenced if fine enough), and
-    /// starts from those fields carried over (transfer_fields). The start-up ladder's iterations
+    /// resolution or finer is first solved on the mesh of half its resolution (a quarter of the
+    /// cells, itself sequenced if fine enough), and starts from those fields carried over
+    /// (transfer_fields). The start-up ladder's iterations
     /// grow with the mesh (RV-1's null: 538 at resolution 1, 1 278 at 2, most of them at the start-up
     /// rungs), the carried state needs a few hundred. Coarser meshes start up directly: their
     /// half-resolution mesh would be too coarse to resolve the gap's flow.
