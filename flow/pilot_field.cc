@@ -234,7 +234,9 @@ namespace servodrift::flow
                               operating.ambient_pressure;
     if (d.valve.pilot.field_cavitation)
       d.solver.set_cavitation_pressure(d.valve.fluid.vapour_pressure - downstream);
-    r.iterations += d.solver.solve().iterations;
+    const SolveReport report = d.solver.solve();
+    r.iterations += report.iterations;
+    r.pressure_relaxation = report.pressure_relaxation;
 
     const double rho = d.conditions.fluid.density, mu = d.conditions.fluid.viscosity;
     const double v_ideal = ideal_velocity(dp, rho);

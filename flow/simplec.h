@@ -64,6 +64,7 @@ namespace servodrift::flow
   {
     unsigned int iterations = 0;
     Residuals residuals;
+    double pressure_relaxation = 0; ///< at the end: lowered from the setting by each cycle caught [1]
   };
 
   /// The iteration limit was reached (the fields are usable as a start, not as a result).

@@ -33,6 +33,12 @@ namespace servodrift
                       "A run whose largest scaled residual has not fallen by half from one window of this "
                       "many iterations to the next has stalled (a cycle, not a slow convergence) and fails "
                       "then, without waiting for the iteration limit. 0: never. [1]");
+    prm.declare_entry("Cycle window", "200", Patterns::Integer(0, 10000000),
+                      "A run whose largest scaled residual has not fallen by half from one window of this "
+                      "many iterations to the next is caught in a cycle of the segregated coupling (around "
+                      "a cavity, where cells switch between liquid and vapour): its pressure relaxation is "
+                      "lowered by a factor 0.7, down to 0.3, and the run goes on. The converged fields do "
+                      "not depend on the pressure relaxation, only the path does. 0: never. [1]");
     prm.declare_entry("Report interval", "0", Patterns::Integer(0, 10000000),
                       "Print the residuals every this many iterations on stderr (0: only at the end). [1]");
     prm.declare_entry("Monitor iterations", "50", Patterns::Integer(1, 100000),
@@ -88,6 +94,7 @@ namespace servodrift
     tolerance = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Maximum iterations");
     stall_window = prm.get_integer("Stall window");
+    cycle_window = prm.get_integer("Cycle window");
     report_interval = prm.get_integer("Report interval");
     monitor_iterations = prm.get_integer("Monitor iterations");
     monitor_tolerance = prm.get_double("Monitor tolerance");

@@ -17,6 +17,7 @@ namespace servodrift
     double tolerance;               ///< scaled residuals of momentum and continuity [1]
     unsigned int max_iterations;    ///< SIMPLEC iterations before the run fails
     unsigned int stall_window;      ///< iterations per window of the stall test (0: off)
+    unsigned int cycle_window;      ///< iterations per window of the cycle test that lowers alpha_p (0: off)
     unsigned int report_interval;   ///< print the residuals every n iterations (0: never)
     unsigned int monitor_iterations; ///< window over which monitored quantities must settle [1]
     double monitor_tolerance;       ///< their largest relative change over that window [1]

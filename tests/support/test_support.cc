@@ -12,12 +12,30 @@
 
 namespace servodrift::test
 {
+  namespace
+  {
+    std::vector<std::string> &created_directories()
+    {
+      static std::vector<std::string> directories;
+      return directories;
+    }
+  } // namespace
+
   std::string temporary_directory()
   {
     std::string pattern = (std::filesystem::temp_directory_path() / "servodrift-test-XXXXXX").string();
     if (!::mkdtemp(pattern.data()))
       throw std::runtime_error("mkdtemp failed");
+    created_directories().push_back(pattern);
     return pattern;
+  }
+
+  void remove_temporary_directories()
+  {
+    std::error_code ignored; // a directory a test removed itself is fine
+    for (const std::string &directory : created_directories())
+      std::filesystem::remove_all(directory, ignored);
+    created_directories().clear();
   }
 
   ValveDescription valve(std::vector<std::string> overrides)

@@ -14,8 +14,11 @@ namespace servodrift::test
   /// Runs the three reduced-order stages for `valve' (into valve.output.directory) and returns
   /// the tables directory.
   std::string write_reduced_order_tables(const ValveDescription &valve);
-  /// A fresh, empty temporary directory.
+  /// A fresh, empty temporary directory (removed at the end of a passing test program).
   std::string temporary_directory();
+  /// Removes every directory temporary_directory() made in this process (the test main calls it
+  /// when all tests passed; a failure keeps them for inspection).
+  void remove_temporary_directories();
   /// Relative difference |a - b|/|b|.
   double relative(double a, double b);
 } // namespace servodrift::test
