@@ -40,6 +40,13 @@ namespace servodrift::flow
       }
   }
 
+  double lichtarowicz_discharge_coefficient(double reynolds_number, double length_over_diameter)
+  {
+    // E21
+    const double C_du = 0.827 - 0.0085 * length_over_diameter;
+    return reynolds_number > 0 ? 1.0 / (1.0 / C_du + 20.0 * (1.0 + 2.25 * length_over_diameter) / reynolds_number) : 0.0;
+  }
+
   OrificeState PilotClosedForms::fixed_orifice(double dp) const
   {
     OrificeState s;
@@ -48,11 +55,7 @@ namespace servodrift::flow
     s.reynolds_number = D0 * ideal_velocity / nu; // E17: on the ideal velocity
     if (pilot.fixed_orifice_law == PilotStageParameters::OrificeLaw::lichtarowicz)
       {
-        // E21 (Lichtarowicz, Duggins & Markland): 1/C_d = 1/C_du + 20 (1 + 2.25 l/d)/Re
-        const double l_over_d = g.fixed_orifice_length / D0;
-        const double C_du = 0.827 - 0.0085 * l_over_d;
-        s.discharge_coefficient =
-          s.reynolds_number > 0 ? 1.0 / (1.0 / C_du + 20.0 * (1.0 + 2.25 * l_over_d) / s.reynolds_number) : 0.0;
+        s.discharge_coefficient = lichtarowicz_discharge_coefficient(s.reynolds_number, g.fixed_orifice_length / D0);
       }
     else
       {

@@ -15,6 +15,10 @@ namespace servodrift::flow
     bool clamped = false;         ///< a law was clamped to its validity window (C6)
   };
 
+  /// E21 (Lichtarowicz, Duggins & Markland): 1/C_d = 1/C_du + 20 (1 + 2.25 l/d)/Re with
+  /// C_du = 0.827 - 0.0085 l/d; Re on the ideal velocity (E17), l/d of the bore. 0 at Re = 0.
+  double lichtarowicz_discharge_coefficient(double reynolds_number, double length_over_diameter);
+
   class PilotClosedForms
   {
   public:
