@@ -1244,6 +1244,11 @@ namespace servodrift::flow
       anderson = std::make_unique<AndersonAcceleration>(d.settings.acceleration_depth);
     Eigen::VectorXd accelerated_start; // the state the last iteration started from (with acceleration)
     double smallest_change = std::numeric_limits<double>::infinity();
+    // leaves the accelerated phase: the history, its start and the field scales are forgotten
+    auto stop_acceleration = [&] {
+      anderson->restart(), accelerated_start.resize(0), d.field_scales.clear();
+      smallest_change = std::numeric_limits<double>::infinity();
+    };
     for (unsigned int it = 1;; ++it)
       {
         Residuals r;
@@ -1315,17 +1320,16 @@ namespace servodrift::flow
                   accelerated_start = g;
               }
             else if (accelerated_start.size() > 0)
-              anderson->restart(), accelerated_start.resize(0), d.field_scales.clear(),
-                smallest_change = std::numeric_limits<double>::infinity();
+              stop_acceleration();
           }
         // A segregated iteration can settle into a limit cycle instead of converging: around a
         // cavity, the cells at its edge switch between liquid and vapour every few iterations, and
         // with them the whole pressure field swings (RV-1's fixed orifice at 20.6 MPa and 60 degC: six
-        // cells, period 12, continuity stuck at 1.4e-2 with alpha_p = 0.7, converged in 460
-        // iterations with 0.5). A smaller pressure relaxation damps the swing; the fixed point does
-        // not depend on it (the correction vanishes there), so lowering it changes the path only.
-        // Steps of 0.7 down to 0.3: below that, the pressure lags the fluxes so far that the
-        // iteration slows more than it gains.
+        // cells, period 12, continuity stuck at 1.4e-2 with alpha_p = 0.7; about 500 iterations
+        // with 0.5). A smaller pressure relaxation damps the swing; the fixed point does not depend
+        // on it (the correction vanishes there), so lowering it changes the path only. Steps of 0.7;
+        // the floor 0.3 is a choice, not a measurement: it keeps a run that is merely slow from
+        // being slowed further (the cycles seen so far needed one step, to 0.49).
         if (const unsigned int cycle = d.settings.cycle_window; cycle > 0)
           {
             cycle_best = std::min(cycle_best, std::max({r.u, r.v, r.continuity, r.k, r.epsilon}));
@@ -1336,8 +1340,7 @@ namespace servodrift::flow
                   {
                     d.pressure_relaxation = std::max(lowest_pressure_relaxation, 0.7 * d.pressure_relaxation);
                     if (anderson) // another iteration map: the old history does not belong to it
-                      anderson->restart(), accelerated_start.resize(0), d.field_scales.clear(),
-                        smallest_change = std::numeric_limits<double>::infinity();
+                      stop_acceleration();
                     if (d.settings.report_interval > 0)
                       std::fprintf(stderr, "  iteration %u: a cycle; pressure relaxation lowered to %.3g\n", it,
                                    d.pressure_relaxation);
