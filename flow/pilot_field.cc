@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 namespace servodrift
 {
@@ -48,6 +49,20 @@ namespace servodrift::flow
 
     /// sqrt(2 dp / rho): the ideal (Bernoulli) velocity of a pressure difference [m/s].
     double ideal_velocity(double dp, double rho) { return std::sqrt(2 * dp / rho); }
+
+    /// The pressure levels of a solution path from the level `from' the fields were solved at (0:
+    /// none) to `to', the last one: geometric, successive levels at most `ratio' apart.
+    std::vector<double> continuation_levels(double from, double to, double ratio)
+    {
+      if (!(from > 0) || from == to)
+        return {to};
+      const double steps = std::ceil(std::abs(std::log(to / from)) / std::log(ratio) * (1 - 1e-12));
+      std::vector<double> levels;
+      for (double k = 1; k < steps; ++k)
+        levels.push_back(from * std::pow(to / from, k / steps));
+      levels.push_back(to);
+      return levels;
+    }
 
     FvMesh make_mesh(const ValveDescription &valve, PilotGeometry kind, const PilotFieldCase &c, double h,
                      double &bore_radius)
@@ -113,6 +128,7 @@ namespace servodrift::flow
     FvMesh mesh;
     SimplecSolver solver;
     bool at_rest = true;
+    double continuation_ratio; ///< largest ratio of successive pressure levels (`Field continuation ratio')
     std::vector<unsigned int> exit_faces; ///< nozzle: interior faces of the bore's exit section x = 0, r < r_N
 
     Implementation(const ValveDescription &valve_, PilotGeometry kind_, const PilotFieldCase &c, double h)
@@ -122,6 +138,7 @@ namespace servodrift::flow
       , gap(h)
       , mesh(make_mesh(valve_, kind_, c, h, bore_radius))
       , solver(mesh, c.fluid, boundaries(kind_), with_model(valve_.flow_solver, c.turbulence))
+      , continuation_ratio(valve_.pilot.field_continuation_ratio)
     {
       if (kind == PilotGeometry::nozzle_flapper)
         {
@@ -147,6 +164,29 @@ namespace servodrift::flow
     {
       const double length = kind == PilotGeometry::fixed_orifice ? 2 * bore_radius : 2 * gap;
       return length * ideal_velocity(dp, conditions.fluid.density) * conditions.fluid.density / conditions.fluid.viscosity;
+    }
+
+    /// The outlet's absolute pressure at pressure difference dp: the control pressure p_s - dp
+    /// downstream of the orifice, the return pressure downstream of the nozzle (gauge + ambient).
+    double downstream_pressure(double dp) const
+    {
+      const auto &operating = valve.operating;
+      return (kind == PilotGeometry::fixed_orifice ? operating.supply_pressure - dp : operating.return_pressure) +
+             operating.ambient_pressure;
+    }
+
+    /// One step of the solution path: the fields scaled to the pressure level dp (from the inlet
+    /// pressure they were solved at), the vapour pressure at that level's outlet pressure, solved.
+    SolveReport solve_at(double dp)
+    {
+      const double previous = solver.boundary_pressure("inlet");
+      if (previous > 0 && previous != dp)
+        solver.scale_pressure_level(dp / previous);
+      solver.set_boundary_pressure("inlet", dp);
+      at_rest = false;
+      if (valve.pilot.field_cavitation)
+        solver.set_cavitation_pressure(valve.fluid.vapour_pressure - downstream_pressure(dp));
+      return solver.solve();
     }
 
     /// A case at rest on a fine mesh: the case solved on the mesh of half the resolution, carried
@@ -221,22 +261,16 @@ namespace servodrift::flow
     if (d.at_rest && !(d.valve.pilot.field_grid_sequencing && d.conditions.resolution >= grid_sequencing_resolution &&
                        d.start_from_coarser_mesh(dp, r.coarse_mesh_iterations)))
       r.iterations += d.start_up(dp);
-    // continuation from the last fields, scaled to the new pressure level first
-    const double previous = d.solver.boundary_pressure("inlet");
-    if (previous > 0 && previous != dp)
-      d.solver.scale_pressure_level(dp / previous);
-    d.solver.set_boundary_pressure("inlet", dp);
-    d.at_rest = false;
-    const auto &operating = d.valve.operating;
-    // the outlet's absolute pressure: the control pressure p_s - dp downstream of the orifice, the
-    // return pressure downstream of the nozzle (gauge + ambient)
-    const double downstream = (d.kind == PilotGeometry::fixed_orifice ? operating.supply_pressure - dp : operating.return_pressure) +
-                              operating.ambient_pressure;
-    if (d.valve.pilot.field_cavitation)
-      d.solver.set_cavitation_pressure(d.valve.fluid.vapour_pressure - downstream);
-    const SolveReport report = d.solver.solve();
-    r.iterations += report.iterations;
+    // continuation from the last fields to dp, through geometric intermediate levels no more than
+    // the continuation ratio apart (the quasi-static path; `Field continuation ratio')
+    SolveReport report;
+    for (const double level : continuation_levels(d.solver.boundary_pressure("inlet"), dp, d.continuation_ratio))
+      {
+        report = d.solve_at(level);
+        r.iterations += report.iterations;
+      }
     r.pressure_relaxation = report.pressure_relaxation;
+    const double downstream = d.downstream_pressure(dp);
 
     const double rho = d.conditions.fluid.density, mu = d.conditions.fluid.viscosity;
     const double v_ideal = ideal_velocity(dp, rho);
@@ -293,6 +327,12 @@ namespace servodrift::flow
     impl->at_rest = false;
   }
   bool PilotField::at_rest() const { return impl->at_rest; }
+  void PilotField::set_continuation_ratio(double ratio)
+  {
+    if (!(ratio > 1) || !std::isfinite(ratio))
+      throw std::invalid_argument("flow: continuation ratio " + format_number(ratio) + " must be > 1");
+    impl->continuation_ratio = ratio;
+  }
   void PilotField::set_failure_output(const std::string &f) { impl->solver.failure_output = f; }
   void PilotField::write_vtu(const std::string &filename) const { impl->solver.write_vtu(filename); }
   std::size_t PilotField::n_cells() const { return impl->mesh.n_cells(); }

@@ -4,10 +4,12 @@
 // and meshes/nozzle_flapper.geo with every dimension at the case's temperature.
 //
 // A case is solved at one pressure difference after another, each from the last converged fields
-// scaled to the new pressure level (continuation); a case can also start from another case's fields
-// of the same mesh topology (another gap or temperature, or a laminar solution under a turbulent
-// case). A case that starts from rest is first solved laminar at a pressure difference low enough
-// for a steady laminar flow (ideal-velocity Reynolds number 300), then carried to its own.
+// scaled to the new pressure level (continuation), through intermediate levels where the step is
+// larger than `Field continuation ratio' (the quasi-static path: laminar cavitating cases have more
+// than one steady solution); a case can also start from another case's fields of the same mesh
+// topology (another gap or temperature, or a laminar solution under a turbulent case). A case that
+// starts from rest is first solved laminar at a pressure difference low enough for a steady laminar
+// flow (ideal-velocity Reynolds number 300), then carried to its own.
 //
 // Extraction (model.md 4.2): Q from the outlet flux; C_d = Q/(A sqrt(2 dp/rho)) with dp from the
 // upstream stagnation pressure (the inlet's total pressure); Re as in E17 (orifice) and E18 (nozzle);
@@ -80,6 +82,9 @@ namespace servodrift::flow
     FlowFields fields() const;
     void set_fields(const FlowFields &fields);
     bool at_rest() const; ///< nothing solved or given yet: the next solve starts up laminar
+    /// The largest ratio of successive pressure levels on the path of the next solves (default:
+    /// `Pilot stage/Field continuation ratio'), > 1.
+    void set_continuation_ratio(double ratio);
 
     /// Where a case that fails writes its last fields (VTU); empty: nowhere.
     void set_failure_output(const std::string &filename);

@@ -225,7 +225,9 @@ namespace servodrift::flow
       /// Continuation step control: a case that does not converge from its starting fields is tried
       /// once more, from the chain's last converged fields of its own model through the geometric
       /// mean of the two pressure levels (half the step, in the logarithm), or, where there is no
-      /// such state at this gap or it is the same pressure level, from rest (laminar start-up).
+      /// such state at this gap or it is the same pressure level, from rest (laminar start-up) with
+      /// half the steps of `Field continuation ratio' (in the logarithm), so that the retry does not
+      /// repeat the path that failed.
       /// The second failure propagates.
       PilotFieldResult solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
                                         bool started_elsewhere)
@@ -251,7 +253,10 @@ namespace servodrift::flow
               }
             slot = std::make_unique<PilotField>(valve, kind, c, h);
             slot->set_failure_output(failure_output);
-            return slot->solve(dp);
+            slot->set_continuation_ratio(std::sqrt(valve.pilot.field_continuation_ratio));
+            PilotFieldResult r = slot->solve(dp);
+            slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
+            return r;
           }
       }
 

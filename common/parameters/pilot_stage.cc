@@ -42,6 +42,14 @@ namespace servodrift
                       "first solved on the mesh of half that resolution and starts from those fields "
                       "(fewer, cheaper iterations; the answer is the fine mesh's). false: the laminar "
                       "start-up on the fine mesh itself. [-]");
+    prm.declare_entry("Field continuation ratio", "3", Patterns::Double(1.1, 1e6),
+                      "Field level: largest ratio of successive pressure levels on a case's solution "
+                      "path (from its start-up or the last converged case to its own pressure "
+                      "difference; larger steps go through geometric intermediate levels). Laminar "
+                      "cavitating nozzle cases have more than one steady solution, and a step of 6 or "
+                      "more from the start-up can land on a cavity that chokes the curtain, 5-7 % below "
+                      "the quasi-static C_dn; steps of 3 or less follow the quasi-static branch "
+                      "(doc/validation.md). [1]");
     prm.declare_entry("Field plenum size", "6", Patterns::Double(2, 100),
                       "Field level: radius and length of the fixed orifice's upstream plenum, in bore "
                       "radii D_0/2. [1]");
@@ -106,6 +114,7 @@ namespace servodrift
     control_cavity_volume = prm.get_double("Control cavity volume");
     field_resolution = prm.get_double("Field mesh resolution");
     field_grid_sequencing = prm.get_bool("Field grid sequencing");
+    field_continuation_ratio = prm.get_double("Field continuation ratio");
     field_plenum_size = prm.get_double("Field plenum size");
     field_chamber_length = prm.get_double("Field chamber length");
     field_outlet_radius = prm.get_double("Field outlet radius");

@@ -26,6 +26,7 @@ namespace servodrift
     // field level (meshes/fixed_orifice.geo, meshes/nozzle_flapper.geo)
     double field_resolution;        ///< multiplies every cell count [1]
     bool field_grid_sequencing;     ///< a fine case from rest starts from the half-resolution solution
+    double field_continuation_ratio; ///< largest ratio of successive pressure levels of a solution path [1]
     double field_plenum_size;       ///< orifice plenum radius and length / bore radius [1]
     double field_chamber_length;    ///< orifice downstream chamber length / bore radius [1]
     double field_outlet_radius;     ///< nozzle-flapper outlet radius / land radius [1]
