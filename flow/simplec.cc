@@ -1213,14 +1213,15 @@ namespace servodrift::flow
 
   SimplecSolver::~SimplecSolver() = default;
 
-  SolveReport SimplecSolver::solve()
+  SolveReport SimplecSolver::solve() { return solve_to(impl->settings.tolerance, true); }
+
+  SolveReport SimplecSolver::solve_to(double tolerance, bool consult_monitor)
   {
     auto &d = *impl;
     SolveReport report;
-    const double tolerance = d.settings.tolerance;
     std::vector<std::vector<double>> history; // the monitored quantities of the last window + 1 iterations
     auto monitors_settled = [&] {
-      if (!d.monitor)
+      if (!d.monitor || !consult_monitor)
         return true;
       history.push_back(d.monitor());
       if (history.size() > d.monitor_window + 1)

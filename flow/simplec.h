@@ -137,6 +137,9 @@ namespace servodrift::flow
     /// or divergence (naming the iteration; with `failure_output' set, the fields are written there
     /// as VTU first).
     SolveReport solve();
+    /// The same to another tolerance, with or without the convergence monitor: a starting state
+    /// for a later solve (an intermediate level of a continuation path).
+    SolveReport solve_to(double tolerance, bool consult_monitor);
     std::string failure_output;
 
     const std::vector<double> &velocity_x() const;
