@@ -209,6 +209,10 @@ namespace servodrift::flow
   TEST(PilotField, CaughtCyclesLeaveTheAnswerUnchanged)
   {
     ValveDescription v = laminar_valve();
+    // the chamber the cycle was traced on (the default is 30 since; there the reference run, 0.5 from
+    // the start and no cycle window, did not converge in 2 000 iterations, while the default path
+    // converges to the same C_d, 0.61551, in 839 iterations: measured)
+    v.pilot.field_chamber_length = 20;
     PilotFieldCase c = pilot_field_case(v, 60);
     c.turbulence = FlowSolverParameters::Turbulence::k_epsilon;
     PilotField start(v, PilotGeometry::fixed_orifice, c);
