@@ -253,10 +253,19 @@ namespace servodrift::flow
               }
             slot = std::make_unique<PilotField>(valve, kind, c, h);
             slot->set_failure_output(failure_output);
+            // the smaller steps for this solve only: the chain's next cases take the valve's
             slot->set_continuation_ratio(std::sqrt(valve.pilot.field_continuation_ratio));
-            PilotFieldResult r = slot->solve(dp);
-            slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
-            return r;
+            try
+              {
+                PilotFieldResult r = slot->solve(dp);
+                slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
+                return r;
+              }
+            catch (const std::runtime_error &)
+              {
+                slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
+                throw;
+              }
           }
       }
 
