@@ -123,6 +123,8 @@ namespace servodrift::flow
     for (std::size_t c = 0; c < n_cells(); ++c)
       cell_face_offset[c + 1] = cell_face_offset[c] + cell_faces[c].size();
     gradient_coefficient.resize(cell_face_offset.back());
+    cell_face_other.resize(cell_face_offset.back());
+    cell_to_face.resize(cell_face_offset.back());
     for (std::size_t c = 0; c < n_cells(); ++c)
       {
         auto other_center = [&](unsigned int f) {
@@ -139,6 +141,10 @@ namespace servodrift::flow
           {
             const Vector2 d = other_center(cell_faces[c][k]) - cell_center[c];
             gradient_coefficient[cell_face_offset[c] + k] = G_inverse * d / d.squaredNorm();
+            const unsigned int f = cell_faces[c][k];
+            cell_to_face[cell_face_offset[c] + k] = face_center[f] - cell_center[c];
+            cell_face_other[cell_face_offset[c] + k] =
+              neighbour[f] < 0 ? -int(f) - 1 : owner[f] == c ? neighbour[f] : int(owner[f]);
           }
       }
   }
@@ -165,12 +171,10 @@ namespace servodrift::flow
     for (std::size_t c = 0; c < n_cells(); ++c)
       {
         Vector2 sum = Vector2::Zero();
-        const std::size_t offset = cell_face_offset[c];
-        for (std::size_t k = 0; k < cell_faces[c].size(); ++k)
+        for (std::size_t k = cell_face_offset[c]; k < cell_face_offset[c + 1]; ++k)
           {
-            const unsigned int f = cell_faces[c][k];
-            const double other = neighbour[f] < 0 ? boundary_value[f] : phi[owner[f] == c ? neighbour[f] : owner[f]];
-            sum += gradient_coefficient[offset + k] * (other - phi[c]);
+            const int other = cell_face_other[k];
+            sum += gradient_coefficient[k] * ((other >= 0 ? phi[std::size_t(other)] : boundary_value[std::size_t(-other - 1)]) - phi[c]);
           }
         g[c] = sum;
       }

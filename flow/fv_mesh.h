@@ -39,6 +39,14 @@ namespace servodrift::flow
     std::vector<Vector2> cell_center; ///< centroid of the 2D cell
     std::vector<double> cell_volume;  ///< area (planar) or int r dA (axisymmetric) [m^2 or m^3/rad]
     std::vector<std::vector<unsigned int>> cell_faces;
+    /// The same flattened, for the loops that run several times per iteration (gradients, limiter):
+    /// cell c's faces are cell_faces[c][k - cell_face_offset[c]] for k in [cell_face_offset[c],
+    /// cell_face_offset[c + 1]), and across face k lies cell_face_other[k]: the neighbour cell
+    /// (>= 0) or, on the boundary face f, -(f + 1); cell_to_face[k] is the face's centre minus the
+    /// cell's.
+    std::vector<std::size_t> cell_face_offset;
+    std::vector<int> cell_face_other;
+    std::vector<Vector2> cell_to_face;
 
     // faces
     std::size_t n_faces() const { return owner.size(); }
@@ -66,6 +74,5 @@ namespace servodrift::flow
     /// Weighted least squares (weights 1/|d|^2): grad phi_c = sum over the cell's faces of
     /// coefficient * (phi_other - phi_c), coefficient = (sum w d d^T)^-1 w d, stored per cell face.
     std::vector<Vector2> gradient_coefficient; ///< aligned with the flattened cell_faces
-    std::vector<std::size_t> cell_face_offset;
   };
 } // namespace servodrift::flow

@@ -386,14 +386,15 @@ namespace servodrift::flow
     for (std::size_t c = 0; c < mesh.n_cells(); ++c)
       {
         double lo = phi[c], hi = phi[c];
-        for (unsigned int f : mesh.cell_faces[c])
+        for (std::size_t k = mesh.cell_face_offset[c]; k < mesh.cell_face_offset[c + 1]; ++k)
           {
-            const double o = mesh.neighbour[f] < 0 ? phi_b[f] : phi[mesh.owner[f] == c ? mesh.neighbour[f] : mesh.owner[f]];
+            const int other = mesh.cell_face_other[k];
+            const double o = other >= 0 ? phi[std::size_t(other)] : phi_b[std::size_t(-other - 1)];
             lo = std::min(lo, o), hi = std::max(hi, o);
           }
-        for (unsigned int f : mesh.cell_faces[c])
+        for (std::size_t k = mesh.cell_face_offset[c]; k < mesh.cell_face_offset[c + 1]; ++k)
           {
-            const double delta = grad[c].dot(mesh.face_center[f] - mesh.cell_center[c]);
+            const double delta = grad[c].dot(mesh.cell_to_face[k]);
             if (delta > 1e-300)
               psi[c] = std::min(psi[c], std::min(1.0, (hi - phi[c]) / delta));
             else if (delta < -1e-300)
@@ -591,7 +592,7 @@ namespace servodrift::flow
     if (r.norm() == 0)
       return;
     auto run = [&](auto &solver) {
-      solver.setTolerance(1e-3);
+      solver.setTolerance(settings.linear_solver_tolerance);
       solver.setMaxIterations(1000);
       solver.compute(A);
       const Eigen::VectorXd dx = solver.solve(r);

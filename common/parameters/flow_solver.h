@@ -14,6 +14,7 @@ namespace servodrift
     double pressure_relaxation;     ///< alpha_p of the pressure correction (1 for SIMPLEC) [1]
     enum class MomentumSolver { bicgstab_jacobi, bicgstab_ilu, direct };
     MomentumSolver momentum_solver; ///< linear solver of the momentum equations
+    double linear_solver_tolerance; ///< BiCGSTAB's residual reduction of momentum, k and epsilon [1]
     double tolerance;               ///< scaled residuals of momentum and continuity [1]
     unsigned int max_iterations;    ///< SIMPLEC iterations before the run fails
     unsigned int stall_window;      ///< iterations per window of the stall test (0: off)
