@@ -12,6 +12,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace servodrift
@@ -45,9 +46,9 @@ namespace servodrift
     , last_print(start)
   {}
 
-  void Progress::update(std::size_t done, std::size_t share)
+  void Progress::update(std::size_t done)
   {
-    if (!active || share == 0)
+    if (!active || n_cases == 0)
       return;
     const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - start).count();
@@ -55,8 +56,8 @@ namespace servodrift
     if ((terminal && since < 0.1) || (!terminal && since < 2.0))
       return;
     last_print = now;
-    const std::size_t k = std::min(n_cases, done * n_cases / share);
-    const double remaining = done > 0 ? elapsed * (share - done) / done : 0.0;
+    const std::size_t k = std::min(n_cases, done);
+    const double remaining = k > 0 ? elapsed * double(n_cases - k) / double(k) : 0.0;
     std::ostringstream line;
     line << "[" << label << "] case " << k << " of " << n_cases << ", elapsed " << seconds(elapsed)
          << ", remaining " << seconds(remaining);
@@ -77,30 +78,90 @@ namespace servodrift
               << (mpi_size() == 1 ? " rank" : " ranks") << std::endl;
   }
 
+  namespace
+  {
+    /// The cases of a sweep on more than one rank, handed out in order 0, 1, 2, ... to whichever
+    /// rank asks next: a counter on rank 0 that each rank advances by MPI_Fetch_and_op (MPI-3
+    /// passive-target one-sided communication; a window locked for the sweep's duration). A rank
+    /// that finishes a cheap case takes the next one while another still works on a costly one, so
+    /// a sweep whose cases differ in cost (the flow stage's chains: from seconds to minutes) ends
+    /// when the work is done, not when the unluckiest fixed share is. The second counter counts the
+    /// finished cases, for the progress line.
+    class CaseDispenser
+    {
+    public:
+      CaseDispenser()
+      {
+        MPI_Win_allocate(mpi_rank() == 0 ? 2 * sizeof(long long) : 0, sizeof(long long), MPI_INFO_NULL, MPI_COMM_WORLD,
+                         &counters, &window);
+        if (mpi_rank() == 0)
+          {
+            MPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, window);
+            counters[0] = counters[1] = 0;
+            MPI_Win_unlock(0, window);
+          }
+        MPI_Barrier(MPI_COMM_WORLD); // the counters are set before any rank takes from them
+        MPI_Win_lock_all(0, window);
+      }
+      ~CaseDispenser()
+      {
+        MPI_Win_unlock_all(window);
+        MPI_Win_free(&window); // collective: every rank leaves the sweep through here
+      }
+      CaseDispenser(const CaseDispenser &) = delete;
+      CaseDispenser &operator=(const CaseDispenser &) = delete;
+
+      /// The next case to compute (>= n_cases: none left).
+      std::size_t take() { return std::size_t(add(0, 1)); }
+      /// No more cases for anyone (a case failed: the sweep fails, the others stop early).
+      void close(std::size_t n_cases) { add(0, static_cast<long long>(n_cases)); }
+      /// Counts a finished case; returns how many are finished, this one included.
+      std::size_t finished() { return std::size_t(add(1, 1) + 1); }
+
+    private:
+      long long add(int counter, long long increment)
+      {
+        long long before = 0;
+        MPI_Fetch_and_op(&increment, &before, MPI_LONG_LONG, 0, counter, MPI_SUM, window);
+        MPI_Win_flush(0, window);
+        return before;
+      }
+      long long *counters = nullptr;
+      MPI_Win window = MPI_WIN_NULL;
+    };
+  } // namespace
+
   CaseRows run_sweep(const std::string &label, std::size_t n_cases,
                      const std::function<CaseRows(std::size_t)> &compute_case, OutputParameters::Progress mode)
   {
-    const unsigned int rank = mpi_rank(), size = mpi_size();
+    const unsigned int size = mpi_size();
     Progress progress(label, n_cases, mode);
 
     // (case index, rows) for the cases of this rank; an error is (case index, message).
     std::vector<std::pair<std::size_t, CaseRows>> mine;
     std::vector<std::pair<std::size_t, std::string>> errors;
-    const std::size_t share = rank < n_cases ? (n_cases - rank + size - 1) / size : 0;
-    std::size_t done = 0;
-    for (std::size_t k = rank; k < n_cases; k += size)
-      {
-        try
-          {
-            mine.emplace_back(k, compute_case(k));
-          }
-        catch (const std::exception &e)
-          {
-            errors.emplace_back(k, e.what());
-            break; // the sweep fails; no need to compute more
-          }
-        progress.update(++done, share);
-      }
+    {
+      std::optional<CaseDispenser> dispenser;
+      if (size > 1)
+        dispenser.emplace();
+      std::size_t next = 0, done = 0;
+      auto next_case = [&] { return dispenser ? dispenser->take() : next++; };
+      for (std::size_t k = next_case(); k < n_cases; k = next_case())
+        {
+          try
+            {
+              mine.emplace_back(k, compute_case(k));
+            }
+          catch (const std::exception &e)
+            {
+              errors.emplace_back(k, e.what());
+              if (dispenser)
+                dispenser->close(n_cases);
+              break; // the sweep fails; no need to compute more
+            }
+          progress.update(dispenser ? dispenser->finished() : ++done);
+        }
+    }
 
     std::vector<std::vector<std::pair<std::size_t, CaseRows>>> all_rows{mine};
     std::vector<std::vector<std::pair<std::size_t, std::string>>> all_errors{errors};

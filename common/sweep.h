@@ -1,8 +1,9 @@
 #pragma once
-// Sweeps: a sweep is a list of independent cases. Under `mpirun -np N' the cases are shared
-// cyclically over the ranks of MPI_COMM_WORLD (case k on rank k mod N), the rows are gathered in
-// case order on every rank, and only rank 0 writes files. Each case is computed by itself, so the
-// result, and the table written from it, is byte-identical for any N.
+// Sweeps: a sweep is a list of independent cases. Under `mpirun -np N' the cases are shared over
+// the ranks of MPI_COMM_WORLD, handed out in case order to whichever rank is free (a one-sided
+// counter on rank 0), the rows are gathered in case order on every rank, and only rank 0 writes
+// files. Put the costly cases first: the last case to start sets the tail. Each case is computed
+// by itself, so the result, and the table written from it, is byte-identical for any N.
 #include "common/parameters/output.h"
 
 #include <chrono>
@@ -18,9 +19,9 @@ namespace servodrift
   {
   public:
     Progress(std::string label, std::size_t n_cases, OutputParameters::Progress mode);
-    /// `done' of the local share of `share' cases finished (the estimate assumes the other ranks
-    /// go as fast).
-    void update(std::size_t done, std::size_t share);
+    /// `done' cases finished, over all ranks (the estimate of the time left assumes the others
+    /// take as long on average).
+    void update(std::size_t done);
     void finish();
 
   private:

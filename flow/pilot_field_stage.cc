@@ -18,6 +18,8 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <utility>
 
 namespace servodrift::flow
 {
@@ -326,14 +328,43 @@ namespace servodrift::flow
       return records;
     }
 
-    CaseRows run_chains(const ValveDescription &valve, PilotGeometry g)
+    /// Reverses the order of the consecutive blocks of `block' rows (the chains of one geometry,
+    /// which the sweep computes hottest first, back in increasing temperature).
+    CaseRows blocks_reversed(const CaseRows &rows, std::size_t block)
+    {
+      CaseRows out;
+      for (std::size_t end = rows.size(); end >= block && block > 0; end -= block)
+        out.insert(out.end(), rows.begin() + std::ptrdiff_t(end - block), rows.begin() + std::ptrdiff_t(end));
+      return out;
+    }
+
+    /// Every chain of both geometries as one sweep, so that the ranks share them as one pool (a
+    /// rank free after a short chain takes the next, whatever its geometry): the hottest temperature
+    /// first, since its lower viscosity and higher Reynolds numbers make its chains the longest
+    /// (RV-1: 120 degC 119 + 124 s against 44 + 31 s at 40 degC), then the others in decreasing
+    /// temperature, each temperature's orifice chain before its nozzle chain. Returns the orifice's
+    /// and the nozzle's records, each in increasing temperature.
+    std::pair<CaseRows, CaseRows> run_chains(const ValveDescription &valve)
     {
       const auto &T = valve.sweeps.table_temperatures;
+      const std::size_t n = T.size();
       on_rank_zero([&] { prepare_output_directory(flow_directory(valve)); });
-      const bool orifice = g == PilotGeometry::fixed_orifice;
-      return run_sweep(orifice ? "flow: fixed orifice (field)" : "flow: nozzle-flapper (field)", T.size(),
-                       [&](std::size_t k) { return orifice ? orifice_chain(valve, T[k]) : nozzle_chain(valve, T[k]); },
-                       valve.output.progress);
+      const CaseRows rows = run_sweep(
+        "flow: fixed orifice and nozzle-flapper chains (field)", 2 * n,
+        [&](std::size_t c) {
+          const double temperature = T[n - 1 - c / 2];
+          return c % 2 == 0 ? orifice_chain(valve, temperature) : nozzle_chain(valve, temperature);
+        },
+        valve.output.progress);
+      CaseRows orifice, nozzle;
+      for (const auto &r : rows)
+        (r[geometry] == 0 ? orifice : nozzle).push_back(r);
+      const std::size_t orifice_block = valve.sweeps.field_orifice_pressure_fractions.size();
+      const std::size_t nozzle_block =
+        valve.sweeps.field_gap_fractions.size() * valve.sweeps.field_nozzle_pressure_fractions.size();
+      if (orifice.size() != n * orifice_block || nozzle.size() != n * nozzle_block)
+        throw std::logic_error("flow: a field chain returned a wrong number of cases");
+      return {blocks_reversed(orifice, orifice_block), blocks_reversed(nozzle, nozzle_block)};
     }
 
     /// flow/<geometry>_cases.csv and the .pvd collection of the VTU files written (rank 0).
@@ -414,54 +445,58 @@ namespace servodrift::flow
                                          "liquid below its vapour pressure and is not physical there")
                   << "; model.md C12; flow/*_cases.csv)\n";
     }
+
+    Table fixed_orifice_table(const ValveDescription &valve, const CaseRows &records)
+    {
+      Table table(schemas::fixed_orifice);
+      std::size_t next = 0;
+      for (double T : valve.sweeps.table_temperatures)
+        {
+          table.rows.push_back({T, 0.0, 0.0, 0.0, 0.0, flags::limit}); // no pressure difference, no flow
+          for (std::size_t j = 0; j < valve.sweeps.field_orifice_pressure_fractions.size(); ++j, ++next)
+            {
+              const auto &r = records[next];
+              table.rows.push_back({T, r[pressure_difference], r[flow_rate], r[discharge_coefficient], r[reynolds_number], r[flag]});
+            }
+        }
+      return table;
+    }
+
+    Table nozzle_flapper_table(const ValveDescription &valve, const CaseRows &records)
+    {
+      Table table(schemas::nozzle_flapper);
+      const auto gaps = scaled(valve.sweeps.field_gap_fractions, valve.pilot.null_gap);
+      const auto dps = scaled(valve.sweeps.field_nozzle_pressure_fractions, span(valve));
+      std::size_t next = 0;
+      for (double T : valve.sweeps.table_temperatures)
+        {
+          const PilotClosedForms closed_forms(valve, T);
+          // the closed gap: no flow, the control pressure on the bore's area (E23 at h = 0)
+          table.rows.push_back({T, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, flags::limit});
+          for (double dp : dps)
+            table.rows.push_back({T, 0.0, dp, 0.0, 0.0, 0.0, closed_forms.nozzle(0.0, dp).flapper_force, flags::limit});
+          for (double h : gaps)
+            {
+              table.rows.push_back({T, h, 0.0, 0.0, 0.0, 0.0, 0.0, flags::limit}); // no pressure difference
+              for (std::size_t j = 0; j < dps.size(); ++j, ++next)
+                {
+                  const auto &r = records[next];
+                  table.rows.push_back({T, h, r[pressure_difference], r[flow_rate], r[discharge_coefficient],
+                                        r[reynolds_number], r[flapper_force], r[flag]});
+                }
+            }
+        }
+      return table;
+    }
   } // namespace
 
-  Table compute_fixed_orifice_field_table(const ValveDescription &valve)
+  PilotTables compute_pilot_field_tables(const ValveDescription &valve)
   {
-    const CaseRows records = run_chains(valve, PilotGeometry::fixed_orifice);
-    write_case_summary(valve, PilotGeometry::fixed_orifice, records);
-    report_counts("fixed-orifice", records, valve.pilot.field_cavitation);
-    Table table(schemas::fixed_orifice);
-    std::size_t next = 0;
-    for (double T : valve.sweeps.table_temperatures)
-      {
-        table.rows.push_back({T, 0.0, 0.0, 0.0, 0.0, flags::limit}); // no pressure difference, no flow
-        for (std::size_t j = 0; j < valve.sweeps.field_orifice_pressure_fractions.size(); ++j, ++next)
-          {
-            const auto &r = records[next];
-            table.rows.push_back({T, r[pressure_difference], r[flow_rate], r[discharge_coefficient], r[reynolds_number], r[flag]});
-          }
-      }
-    return table;
-  }
-
-  Table compute_nozzle_flapper_field_table(const ValveDescription &valve)
-  {
-    const CaseRows records = run_chains(valve, PilotGeometry::nozzle_flapper);
-    write_case_summary(valve, PilotGeometry::nozzle_flapper, records);
-    report_counts("nozzle-flapper", records, valve.pilot.field_cavitation);
-    Table table(schemas::nozzle_flapper);
-    const auto gaps = scaled(valve.sweeps.field_gap_fractions, valve.pilot.null_gap);
-    const auto dps = scaled(valve.sweeps.field_nozzle_pressure_fractions, span(valve));
-    std::size_t next = 0;
-    for (double T : valve.sweeps.table_temperatures)
-      {
-        const PilotClosedForms closed_forms(valve, T);
-        // the closed gap: no flow, the control pressure on the bore's area (E23 at h = 0)
-        table.rows.push_back({T, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, flags::limit});
-        for (double dp : dps)
-          table.rows.push_back({T, 0.0, dp, 0.0, 0.0, 0.0, closed_forms.nozzle(0.0, dp).flapper_force, flags::limit});
-        for (double h : gaps)
-          {
-            table.rows.push_back({T, h, 0.0, 0.0, 0.0, 0.0, 0.0, flags::limit}); // no pressure difference
-            for (std::size_t j = 0; j < dps.size(); ++j, ++next)
-              {
-                const auto &r = records[next];
-                table.rows.push_back({T, h, r[pressure_difference], r[flow_rate], r[discharge_coefficient],
-                                      r[reynolds_number], r[flapper_force], r[flag]});
-              }
-          }
-      }
-    return table;
+    const auto [orifice, nozzle] = run_chains(valve);
+    write_case_summary(valve, PilotGeometry::fixed_orifice, orifice);
+    write_case_summary(valve, PilotGeometry::nozzle_flapper, nozzle);
+    report_counts("fixed-orifice", orifice, valve.pilot.field_cavitation);
+    report_counts("nozzle-flapper", nozzle, valve.pilot.field_cavitation);
+    return {fixed_orifice_table(valve, orifice), nozzle_flapper_table(valve, nozzle)};
   }
 } // namespace servodrift::flow

@@ -2,8 +2,8 @@
 // Field level of the flow stage (issue 5): the fixed_orifice and nozzle_flapper tables from the
 // finite-volume cases of flow/pilot_field, with continuation.
 //
-// One continuation chain per table temperature (the MPI cases of the sweep, so that the tables are
-// the same for any number of ranks): the orifice over its pressure differences in increasing order;
+// One continuation chain per table temperature and geometry (the cases of one sweep, shared over the
+// MPI ranks as one pool, hottest first; the tables are the same for any number of ranks): the orifice over its pressure differences in increasing order;
 // the nozzle over its gaps, from the null gap outwards (each gap starts from its neighbour's first
 // solution), and at each gap over its pressure differences. The first case of a chain starts up
 // laminar (pilot_field.h); every later one starts from the converged neighbour.
@@ -14,11 +14,9 @@
 // vapour pressure, wall y+, the reduced-order values beside it). A case that does not converge is
 // flagged (flag 2) and its row carries the reduced-order value, with a warning on stderr; the
 // tables add the exact no-flow rows (dp = 0, closed gap; flag 3).
-#include "common/table.h"
-#include "common/valve_description.h"
+#include "flow/pilot_stage.h"
 
 namespace servodrift::flow
 {
-  Table compute_fixed_orifice_field_table(const ValveDescription &valve);
-  Table compute_nozzle_flapper_field_table(const ValveDescription &valve);
+  PilotTables compute_pilot_field_tables(const ValveDescription &valve);
 } // namespace servodrift::flow

@@ -17,66 +17,68 @@ namespace servodrift::flow
         dp.push_back(f * span);
       return dp;
     }
+
+    Table compute_fixed_orifice_table(const ValveDescription &valve)
+    {
+      const auto &T = valve.sweeps.table_temperatures;
+      const auto dp = pressure_differences(valve);
+      Table table(schemas::fixed_orifice);
+      table.rows = run_sweep(
+        "flow: fixed orifice", T.size(),
+        [&](std::size_t k) {
+          const PilotClosedForms pilot(valve, T[k]);
+          CaseRows rows;
+          for (double p : dp)
+            {
+              const auto s = pilot.fixed_orifice(p);
+              rows.push_back({T[k], p, s.flow_rate, s.discharge_coefficient, s.reynolds_number,
+                              s.clamped ? flags::clamped : flags::computed});
+            }
+          return rows;
+        },
+        valve.output.progress);
+      return table;
+    }
+
+    Table compute_nozzle_flapper_table(const ValveDescription &valve)
+    {
+      const auto &T = valve.sweeps.table_temperatures;
+      const auto dp = pressure_differences(valve);
+      std::vector<double> gaps;
+      for (double f : valve.sweeps.gap_fractions)
+        gaps.push_back(f * valve.pilot.null_gap);
+      Table table(schemas::nozzle_flapper);
+      table.rows = run_sweep(
+        "flow: nozzle-flapper", T.size() * gaps.size(),
+        [&](std::size_t k) {
+          const double temperature = T[k / gaps.size()], h = gaps[k % gaps.size()];
+          const PilotClosedForms pilot(valve, temperature);
+          CaseRows rows;
+          for (double p : dp)
+            {
+              const auto s = pilot.nozzle(h, p);
+              rows.push_back({temperature, h, p, s.flow_rate, s.discharge_coefficient, s.reynolds_number,
+                              s.flapper_force, s.clamped ? flags::clamped : flags::computed});
+            }
+          return rows;
+        },
+        valve.output.progress);
+      return table;
+    }
   } // namespace
 
-  Table compute_fixed_orifice_table(const ValveDescription &valve)
+  PilotTables compute_pilot_tables(const ValveDescription &valve)
   {
     if (valve.pilot.model_level == "field")
-      return compute_fixed_orifice_field_table(valve);
-    const auto &T = valve.sweeps.table_temperatures;
-    const auto dp = pressure_differences(valve);
-    Table table(schemas::fixed_orifice);
-    table.rows = run_sweep(
-      "flow: fixed orifice", T.size(),
-      [&](std::size_t k) {
-        const PilotClosedForms pilot(valve, T[k]);
-        CaseRows rows;
-        for (double p : dp)
-          {
-            const auto s = pilot.fixed_orifice(p);
-            rows.push_back({T[k], p, s.flow_rate, s.discharge_coefficient, s.reynolds_number,
-                            s.clamped ? flags::clamped : flags::computed});
-          }
-        return rows;
-      },
-      valve.output.progress);
-    return table;
-  }
-
-  Table compute_nozzle_flapper_table(const ValveDescription &valve)
-  {
-    if (valve.pilot.model_level == "field")
-      return compute_nozzle_flapper_field_table(valve);
-    const auto &T = valve.sweeps.table_temperatures;
-    const auto dp = pressure_differences(valve);
-    std::vector<double> gaps;
-    for (double f : valve.sweeps.gap_fractions)
-      gaps.push_back(f * valve.pilot.null_gap);
-    Table table(schemas::nozzle_flapper);
-    table.rows = run_sweep(
-      "flow: nozzle-flapper", T.size() * gaps.size(),
-      [&](std::size_t k) {
-        const double temperature = T[k / gaps.size()], h = gaps[k % gaps.size()];
-        const PilotClosedForms pilot(valve, temperature);
-        CaseRows rows;
-        for (double p : dp)
-          {
-            const auto s = pilot.nozzle(h, p);
-            rows.push_back({temperature, h, p, s.flow_rate, s.discharge_coefficient, s.reynolds_number,
-                            s.flapper_force, s.clamped ? flags::clamped : flags::computed});
-          }
-        return rows;
-      },
-      valve.output.progress);
-    return table;
+      return compute_pilot_field_tables(valve);
+    return {compute_fixed_orifice_table(valve), compute_nozzle_flapper_table(valve)};
   }
 
   void run(const ValveDescription &valve)
   {
     const std::string producer = "flow/" + valve.pilot.model_level;
-    Table orifice = compute_fixed_orifice_table(valve);
-    write_table(valve, orifice, producer);
-    Table nozzle = compute_nozzle_flapper_table(valve);
-    write_table(valve, nozzle, producer);
+    PilotTables tables = compute_pilot_tables(valve);
+    write_table(valve, tables.fixed_orifice, producer);
+    write_table(valve, tables.nozzle_flapper, producer);
   }
 } // namespace servodrift::flow

@@ -7,8 +7,14 @@
 
 namespace servodrift::flow
 {
-  Table compute_fixed_orifice_table(const ValveDescription &valve);
-  Table compute_nozzle_flapper_table(const ValveDescription &valve);
+  struct PilotTables
+  {
+    Table fixed_orifice;
+    Table nozzle_flapper;
+  };
+
+  /// Both tables at the model level of the valve description.
+  PilotTables compute_pilot_tables(const ValveDescription &valve);
   /// Computes both tables and writes them under tables/ (rank 0).
   void run(const ValveDescription &valve);
 } // namespace servodrift::flow

@@ -1,9 +1,13 @@
-// The sweep runner (serial path; the 2-rank path is checked byte for byte by a ctest with mpirun).
+// The sweep runner. These tests run serially and, as unit.sweep_two_ranks, under mpirun -np 2 (the
+// tables of a whole 2-rank run are compared byte for byte by cli.mpi_two_ranks_byte_identical).
 #include "common/sweep.h"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <set>
+#include <thread>
 
 using namespace servodrift;
 
@@ -37,5 +41,34 @@ TEST(Sweep, AFailingCaseFailsTheSweepWithItsMessage)
   catch (const std::runtime_error &e)
     {
       EXPECT_STREQ(e.what(), "case 2 broke");
+    }
+}
+
+TEST(Sweep, ACostlyCaseDoesNotHoldUpTheOthers)
+{
+  // Case 0 takes 0.5 s, the other eleven no time. Cases go to whichever rank is free, so on two
+  // ranks the one that took case 0 computes nothing else: the other has finished cases 1-11 long
+  // before (a fixed cyclic share would have given it cases 2, 4, ..., 10 as well). Each row says
+  // which rank computed it.
+  const std::size_t n = 12;
+  const auto rows = run_sweep(
+    "test", n,
+    [](std::size_t k) {
+      if (k == 0)
+        std::this_thread::sleep_for(std::chrono::milliseconds(500));
+      return CaseRows{{double(k), double(mpi_rank())}};
+    },
+    OutputParameters::Progress::none);
+  ASSERT_EQ(rows.size(), n);
+  std::set<double> ranks_of_the_others;
+  for (std::size_t k = 0; k < n; ++k)
+    {
+      EXPECT_EQ(rows[k][0], double(k)) << "rows in case order, each case once";
+      if (k > 0)
+        ranks_of_the_others.insert(rows[k][1]);
+    }
+  if (mpi_size() > 1) // the sharing out; on one rank, the rows alone
+    {
+      EXPECT_EQ(ranks_of_the_others.count(rows[0][1]), 0u) << "the rank busy with case 0 took no other case";
     }
 }

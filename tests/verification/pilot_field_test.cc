@@ -418,8 +418,7 @@ namespace servodrift::flow
                                       "Sweeps/Field orifice pressure fractions=0.5", "Sweeps/Field gap fractions=1",
                                       "Sweeps/Field nozzle pressure fractions=0.5", "Flow solver/Maximum iterations=20",
                                       "Output/Flow fields=none"});
-    const Table orifice = compute_fixed_orifice_field_table(v);
-    const Table nozzle = compute_nozzle_flapper_field_table(v);
+    const auto [orifice, nozzle] = compute_pilot_field_tables(v);
     const PilotClosedForms closed_forms(v, 40);
     ASSERT_EQ(orifice.rows.size(), 4u); // per temperature: dp = 0 and the case
     EXPECT_EQ(orifice.rows[0].back(), flags::limit);
