@@ -144,7 +144,7 @@ namespace servodrift
       std::optional<CaseDispenser> dispenser;
       if (size > 1)
         dispenser.emplace();
-      std::size_t next = 0, done = 0;
+      std::size_t next = 0; // one rank: the cases in turn
       auto next_case = [&] { return dispenser ? dispenser->take() : next++; };
       for (std::size_t k = next_case(); k < n_cases; k = next_case())
         {
@@ -159,7 +159,7 @@ namespace servodrift
                 dispenser->close(n_cases);
               break; // the sweep fails; no need to compute more
             }
-          progress.update(dispenser ? dispenser->finished() : ++done);
+          progress.update(dispenser ? dispenser->finished() : next);
         }
     }
 

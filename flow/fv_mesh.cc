@@ -172,10 +172,7 @@ namespace servodrift::flow
       {
         Vector2 sum = Vector2::Zero();
         for (std::size_t k = cell_face_offset[c]; k < cell_face_offset[c + 1]; ++k)
-          {
-            const int other = cell_face_other[k];
-            sum += gradient_coefficient[k] * ((other >= 0 ? phi[std::size_t(other)] : boundary_value[std::size_t(-other - 1)]) - phi[c]);
-          }
+          sum += gradient_coefficient[k] * (value_across(k, phi, boundary_value) - phi[c]);
         g[c] = sum;
       }
   }

@@ -47,6 +47,13 @@ namespace servodrift::flow
     std::vector<std::size_t> cell_face_offset;
     std::vector<int> cell_face_other;
     std::vector<Vector2> cell_to_face;
+    /// The value across flattened cell face k: the other cell's, or the boundary face's.
+    double value_across(std::size_t k, const std::vector<double> &cell_value,
+                        const std::vector<double> &boundary_value) const
+    {
+      const int other = cell_face_other[k];
+      return other >= 0 ? cell_value[std::size_t(other)] : boundary_value[std::size_t(-other - 1)];
+    }
 
     // faces
     std::size_t n_faces() const { return owner.size(); }

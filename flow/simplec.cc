@@ -388,8 +388,7 @@ namespace servodrift::flow
         double lo = phi[c], hi = phi[c];
         for (std::size_t k = mesh.cell_face_offset[c]; k < mesh.cell_face_offset[c + 1]; ++k)
           {
-            const int other = mesh.cell_face_other[k];
-            const double o = other >= 0 ? phi[std::size_t(other)] : phi_b[std::size_t(-other - 1)];
+            const double o = mesh.value_across(k, phi, phi_b);
             lo = std::min(lo, o), hi = std::max(hi, o);
           }
         for (std::size_t k = mesh.cell_face_offset[c]; k < mesh.cell_face_offset[c + 1]; ++k)
