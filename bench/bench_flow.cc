@@ -78,12 +78,13 @@ int main(int argc, char **argv)
       if (size[0] * size[1] > largest * 1100)
         break;
       const FvMesh mesh = mesh_of(size[0], size[1]);
-      print("default (BiCGSTAB-Jacobi momentum)", best_of(mesh, valve.flow_solver));
+      print("default (BiCGSTAB-Jacobi)", best_of(mesh, valve.flow_solver));
     }
   if (!compare)
     return 0;
   const FvMesh mesh = mesh_of(320, 64);
-  for (auto [solver, name] : {std::make_pair(FlowSolverParameters::MomentumSolver::bicgstab_ilu, "BiCGSTAB-ILUT momentum"),
+  for (auto [solver, name] : {std::make_pair(FlowSolverParameters::MomentumSolver::bicgstab_gauss_seidel, "BiCGSTAB-Gauss-Seidel"),
+                              std::make_pair(FlowSolverParameters::MomentumSolver::bicgstab_ilu, "BiCGSTAB-ILUT momentum"),
                               std::make_pair(FlowSolverParameters::MomentumSolver::direct, "UMFPACK momentum")})
     {
       FlowSolverParameters s = valve.flow_solver;

@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "common/units.h"
 #include "flow/anderson_acceleration.h"
+#include "flow/gauss_seidel_preconditioner.h"
 #include "flow/vtu_writer.h"
 
 #include <Eigen/CholmodSupport>
@@ -140,6 +141,7 @@ namespace servodrift::flow
     Eigen::UmfPackLU<SparseMatrix> direct_u, direct_v;
     Eigen::BiCGSTAB<SparseMatrix, Eigen::IncompleteLUT<double>> iterative_ilu;
     Eigen::BiCGSTAB<SparseMatrix, Eigen::DiagonalPreconditioner<double>> iterative_jacobi;
+    Eigen::BiCGSTAB<SparseMatrix, SymmetricGaussSeidelPreconditioner> iterative_gauss_seidel;
     std::vector<double> diag, off_sum, psi; // work arrays of the momentum assembly
     std::vector<Vector2> grad;
 
@@ -601,14 +603,16 @@ namespace servodrift::flow
                                  format_number(solver.error()) + ")");
       x += dx;
     };
-    if (settings.momentum_solver == FlowSolverParameters::MomentumSolver::bicgstab_ilu)
+    switch (settings.momentum_solver)
       {
-        iterative_ilu.preconditioner().setDroptol(1e-4);
-        iterative_ilu.preconditioner().setFillfactor(10);
-        run(iterative_ilu);
+        case FlowSolverParameters::MomentumSolver::bicgstab_ilu:
+          iterative_ilu.preconditioner().setDroptol(1e-4);
+          iterative_ilu.preconditioner().setFillfactor(10);
+          run(iterative_ilu);
+          break;
+        case FlowSolverParameters::MomentumSolver::bicgstab_jacobi: run(iterative_jacobi); break;
+        default: run(iterative_gauss_seidel); // also k and epsilon with the direct momentum solver
       }
-    else
-      run(iterative_jacobi);
   }
 
   std::vector<double> SimplecSolver::Implementation::rhie_chow_fluxes() const

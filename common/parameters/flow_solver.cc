@@ -20,10 +20,14 @@ namespace servodrift
                       "Under-relaxation of the pressure correction. SIMPLEC needs none (1) between a "
                       "velocity inlet and an outlet; between pressure boundaries (the valve's cases) it "
                       "settles into a two-iteration cycle without, which 0.7 removes. [1]");
-    prm.declare_entry("Momentum solver", "bicgstab-jacobi", Patterns::Selection("bicgstab-jacobi|bicgstab-ilu|direct"),
-                      "Linear solver of the momentum equations: BiCGSTAB with a Jacobi or an incomplete-LU "
-                      "preconditioner (Eigen), or UMFPACK LU with its symbolic analysis once per mesh "
-                      "(SuiteSparse); bench/bench_flow measures them. [-]");
+    prm.declare_entry("Momentum solver", "bicgstab-jacobi",
+                      Patterns::Selection("bicgstab-jacobi|bicgstab-gauss-seidel|bicgstab-ilu|direct"),
+                      "Linear solver of the momentum, k and epsilon equations: BiCGSTAB (Eigen) preconditioned "
+                      "by Jacobi, by a symmetric Gauss-Seidel sweep or by an incomplete LU (ILUT), or UMFPACK LU "
+                      "with its symbolic analysis once per mesh (SuiteSparse; momentum only, k and epsilon then "
+                      "take the Gauss-Seidel BiCGSTAB). Gauss-Seidel needs 3 BiCGSTAB iterations per solve where "
+                      "Jacobi needs 12, but each costs more: on the valve's field sweep the two take the same time "
+                      "(doc/performance.md); bench/bench_flow measures them. [-]");
     prm.declare_entry("Linear solver tolerance", "1e-3", Patterns::Double(1e-12, 0.5),
                       "BiCGSTAB (momentum, k, epsilon) stops when the residual of the correction has fallen by "
                       "this factor: an outer iteration needs its linearised equations solved only loosely. "
@@ -97,8 +101,10 @@ namespace servodrift
     velocity_relaxation = prm.get_double("Velocity relaxation");
     pressure_relaxation = prm.get_double("Pressure relaxation");
     const std::string m = prm.get("Momentum solver");
-    momentum_solver = m == "direct" ? MomentumSolver::direct :
-                      m == "bicgstab-ilu" ? MomentumSolver::bicgstab_ilu : MomentumSolver::bicgstab_jacobi;
+    momentum_solver = m == "direct"                ? MomentumSolver::direct :
+                      m == "bicgstab-ilu"          ? MomentumSolver::bicgstab_ilu :
+                      m == "bicgstab-gauss-seidel" ? MomentumSolver::bicgstab_gauss_seidel :
+                                                     MomentumSolver::bicgstab_jacobi;
     linear_solver_tolerance = prm.get_double("Linear solver tolerance");
     tolerance = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Maximum iterations");
