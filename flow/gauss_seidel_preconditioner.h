@@ -6,12 +6,13 @@
 // BiCGSTAB needs a quarter of the iterations for the same reduction; but the sweeps cost more than
 // the iterations they save on the valve's meshes (`Flow solver/Momentum solver', doc/performance.md).
 //
-// Works on a column-major matrix with a structurally symmetric pattern and a stored diagonal (the
+// Works on a compressed column-major matrix with every diagonal entry stored (the
 // finite-volume matrices), column by column: the forward sweep solves (D + L) w = r eliminating
 // with the entries below the diagonal of each column, the backward sweep (D + U) z = D w with those
-// above it. No set-up beyond locating the diagonal, which compute() does once per pattern.
+// above it. No set-up beyond locating the diagonal (compute()).
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <vector>
 
 namespace servodrift::flow
@@ -37,7 +38,7 @@ namespace servodrift::flow
       return compute(A);
     }
     /// Takes A's compressed arrays (A is the solver's own matrix or a reference to it and must
-    /// outlive the solve, its values current) and finds its diagonal entries once per pattern.
+    /// outlive the solve, its values current) and finds each column's diagonal entry.
     template <typename MatrixType>
     SymmetricGaussSeidelPreconditioner &compute(const MatrixType &A)
     {
@@ -45,17 +46,14 @@ namespace servodrift::flow
       n = A.cols();
       outer = A.outerIndexPtr(), inner = A.innerIndexPtr(), value = A.valuePtr();
       ok = A.isCompressed();
-      if (ok && (diagonal.size() != std::size_t(n) || pattern_outer != outer || pattern_inner != inner))
-        {
-          diagonal.assign(std::size_t(n), -1);
-          for (Eigen::Index c = 0; c < n; ++c)
-            for (int k = outer[c]; k < outer[c + 1]; ++k)
-              if (inner[k] == c)
-                diagonal[std::size_t(c)] = k;
-          pattern_outer = outer, pattern_inner = inner;
-        }
+      diagonal.assign(std::size_t(n), -1);
       for (Eigen::Index c = 0; ok && c < n; ++c)
-        ok = diagonal[std::size_t(c)] >= 0 && value[diagonal[std::size_t(c)]] != 0;
+        {
+          // the row indices of a compressed column are sorted
+          const int *d = std::lower_bound(inner + outer[c], inner + outer[c + 1], int(c));
+          ok = d != inner + outer[c + 1] && *d == c && value[d - inner] != 0;
+          diagonal[std::size_t(c)] = int(d - inner);
+        }
       return *this;
     }
 
@@ -94,7 +92,6 @@ namespace servodrift::flow
     const int *outer = nullptr, *inner = nullptr;
     const double *value = nullptr;
     std::vector<int> diagonal; ///< index of each column's diagonal entry in the value array
-    const int *pattern_outer = nullptr, *pattern_inner = nullptr;
     bool ok = false;
   };
 } // namespace servodrift::flow

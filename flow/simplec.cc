@@ -610,8 +610,8 @@ namespace servodrift::flow
           iterative_ilu.preconditioner().setFillfactor(10);
           run(iterative_ilu);
           break;
-        case FlowSolverParameters::MomentumSolver::bicgstab_jacobi: run(iterative_jacobi); break;
-        default: run(iterative_gauss_seidel); // also k and epsilon with the direct momentum solver
+        case FlowSolverParameters::MomentumSolver::bicgstab_gauss_seidel: run(iterative_gauss_seidel); break;
+        default: run(iterative_jacobi); // also k and epsilon with the direct momentum solver
       }
   }
 

@@ -25,7 +25,7 @@ namespace servodrift
                       "Linear solver of the momentum, k and epsilon equations: BiCGSTAB (Eigen) preconditioned "
                       "by Jacobi, by a symmetric Gauss-Seidel sweep or by an incomplete LU (ILUT), or UMFPACK LU "
                       "with its symbolic analysis once per mesh (SuiteSparse; momentum only, k and epsilon then "
-                      "take the Gauss-Seidel BiCGSTAB). Gauss-Seidel needs 3 BiCGSTAB iterations per solve where "
+                      "take the Jacobi BiCGSTAB). Gauss-Seidel needs 3 BiCGSTAB iterations per solve where "
                       "Jacobi needs 12, but each costs more: on the valve's field sweep the two take the same time "
                       "(doc/performance.md); bench/bench_flow measures them. [-]");
     prm.declare_entry("Linear solver tolerance", "1e-3", Patterns::Double(1e-12, 0.5),
