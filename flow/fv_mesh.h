@@ -75,6 +75,9 @@ namespace servodrift::flow
     std::vector<Vector2> gradient(const std::vector<double> &cell_value, const std::vector<double> &boundary_value) const;
     void gradient(const std::vector<double> &cell_value, const std::vector<double> &boundary_value,
                   std::vector<Vector2> &result) const;
+    /// The least-squares coefficients of `gradient' per flattened cell face (k as in cell_face_other):
+    /// grad phi_c = sum_k coefficient_k (phi across k - phi_c). The coupled solver's implicit pressure gradient.
+    const std::vector<Vector2> &gradient_coefficients() const { return gradient_coefficient; }
 
   private:
     std::vector<double> weight;

@@ -209,6 +209,15 @@ namespace servodrift::flow
         mass_flux[f] = face_mixture_ratio(f, flux[f]) * flux[f];
     }
     void update_liquid_fraction();
+    /// A cell's new pressure: a cavitating cell holds p_cav, and a liquid one that would be stretched
+    /// below the vapour pressure cavitates.
+    void set_cell_pressure(std::size_t c, double pressure)
+    {
+      if (cavitation && (cavitating[c] || pressure < cavitation_pressure))
+        p[c] = cavitation_pressure, cavitating[c] = 1;
+      else
+        p[c] = pressure;
+    }
     const std::vector<double> &convecting_flux() const { return cavitation ? mass_flux : flux; }
     std::function<std::vector<double>()> monitor;
     unsigned int monitor_window = 50;
@@ -218,8 +227,34 @@ namespace servodrift::flow
     void solve_momentum(SparseMatrix &A, Eigen::VectorXd &b, std::vector<double> &phi,
                         Eigen::UmfPackLU<SparseMatrix> &direct, bool first);
     std::vector<double> rhie_chow_fluxes() const;
+    /// What the continuity residual is relative to: the velocity inlets' inflow or, in a
+    /// pressure-driven flow, the current inflow or outflow of the fluxes F, whichever is larger (from
+    /// rest, one of them can pass through nearly zero while the other has built up, and a residual
+    /// relative to it would read as a divergence); in a closed domain the mean |F| of a face row.
+    double throughput_of(const std::vector<double> &F) const
+    {
+      double inflow = 0, outflow = 0, circulation = 0;
+      for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+        if (mesh.neighbour[f] < 0)
+          inflow += std::max(0.0, -F[f]), outflow += std::max(0.0, F[f]);
+        else
+          circulation += std::abs(F[f]);
+      return reference_flux > 0               ? reference_flux :
+             std::max(inflow, outflow) > 0 ? std::max(inflow, outflow) :
+                                             circulation / std::sqrt(double(mesh.n_cells()));
+    }
     double pressure_correction(std::vector<double> &flux_star);
+    // Coupled pressure-velocity solution (`Pressure-velocity coupling = coupled'): one linear system
+    // in (u, v, p), its pattern fixed per mesh (the same entries, zeros included, at every assembly)
+    std::vector<Eigen::Triplet<double>> coupled_entries;
+    SparseMatrix matrix_coupled;
+    Eigen::UmfPackLU<SparseMatrix> coupled_lu;
+    bool coupled_analyzed = false;
+    bool coupled_iterations = false; ///< this solve iterates coupled (the setting, or SIMPLEC stalled)
+    double coupled_step(const Eigen::VectorXd &bu, const Eigen::VectorXd &bv, double &throughput);
     Residuals iterate(bool first);
+    /// Cavitation, inflow speeds and turbulence after the new fluxes; the scaled residuals.
+    Residuals finish_iteration(double ru, double rv, double scale, double imbalance, double throughput);
 
     // Anderson acceleration of the iteration (`Acceleration depth'): the state the next iteration
     // starts from, packed into one vector with each field divided by its own scale (set at a restart,
@@ -776,23 +811,13 @@ namespace servodrift::flow
       {
         u[c] -= D_simplec[c] * grad_pc[c].x();
         v[c] -= D_simplec[c] * grad_pc[c].y();
-        if (cavitation && cavitating[c])
-          p[c] = cavitation_pressure;
-        else
-          p[c] += pressure_relaxation * pc[c];
-        if (cavitation && p[c] < cavitation_pressure)
-          {
-            // the liquid would be stretched below the vapour pressure: the cell cavitates
-            p[c] = cavitation_pressure;
-            cavitating[c] = 1;
-          }
+        set_cell_pressure(c, p[c] + pressure_relaxation * pc[c]);
       }
     return sum;
   }
 
   Residuals SimplecSolver::Implementation::iterate(bool first)
   {
-    const std::size_t n = mesh.n_cells();
     update_boundary_values();
     mesh.gradient(p, p_b, grad_p);
     Eigen::VectorXd bu, bv;
@@ -800,24 +825,25 @@ namespace servodrift::flow
     const std::vector<double> u_old = u, v_old = v;
     const double ru = assemble_momentum(matrix_u, bu, u_old, u_b, v_old, 0, scale_u);
     const double rv = assemble_momentum(matrix_v, bv, v_old, v_b, u_old, 1, scale_v);
+    if (coupled_iterations)
+      {
+        double throughput = 0;
+        const double imbalance = coupled_step(bu, bv, throughput);
+        return finish_iteration(ru, rv, std::max(scale_u, 1e-300), imbalance, throughput);
+      }
     solve_momentum(matrix_u, bu, u, direct_u, first);
     solve_momentum(matrix_v, bv, v, direct_v, first);
     update_boundary_values();
     std::vector<double> F = rhie_chow_fluxes();
-    // throughput of a pressure-driven flow: its current inflow or outflow, whichever is larger (from
-    // rest, one of them can pass through nearly zero while the other has built up, and a residual
-    // relative to it would read as a divergence)
-    double inflow = 0, outflow = 0, circulation = 0;
-    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
-      if (mesh.neighbour[f] < 0)
-        inflow += std::max(0.0, -F[f]), outflow += std::max(0.0, F[f]);
-      else
-        circulation += std::abs(F[f]);
-    const double throughput = reference_flux > 0               ? reference_flux :
-                              std::max(inflow, outflow) > 0 ? std::max(inflow, outflow) :
-                                                              circulation / std::sqrt(double(n)); // closed domain
+    const double throughput = throughput_of(F);
     const double imbalance = pressure_correction(F);
     flux = F;
+    return finish_iteration(ru, rv, std::max(scale_u, 1e-300), imbalance, throughput);
+  }
+
+  Residuals SimplecSolver::Implementation::finish_iteration(double ru, double rv, double scale, double imbalance,
+                                                           double throughput)
+  {
     if (cavitation)
       {
         update_liquid_fraction();
@@ -830,11 +856,148 @@ namespace servodrift::flow
         turbulence_step(r);
         update_face_viscosity();
       }
-    const double scale = std::max(scale_u, 1e-300);
     r.u = ru / scale;
     r.v = rv / scale;
     r.continuity = imbalance / std::max(throughput, 1e-300);
     return r;
+  }
+
+  /// One coupled iteration: the relaxed momentum equations (assembled, with the pressure gradient
+  /// explicit in bu, bv) and continuity of the Rhie-Chow fluxes, solved together for u, v, p.
+  ///   momentum:   A u + V G_int(p) = b + V G_int(p_old)   (G_int: the least-squares gradient's
+  ///               interior part; its boundary part, with the walls' extrapolated pressure, stays
+  ///               explicit in b, so that at convergence the equation is SIMPLEC's exactly)
+  ///   continuity: sum_f m_f F_f = 0,  F_f = rho [u_f.S - D_f ((p_N - p_P) - mean(grad p).d) |S|/(n.d)]
+  ///               with u_f = w u_P + (1 - w) u_N implicit, the mean gradient of the last pressure
+  ///               explicit, and m_f the upwind mixture density ratio of the last fluxes.
+  /// Cavitating cells hold p = p_cav in place of their continuity (their liquid fraction balances
+  /// their mass, as with SIMPLEC). Returns the mass imbalance of the state the step started from
+  /// (its Rhie-Chow fluxes), and in `throughput' their inflow or outflow, whichever is larger.
+  double SimplecSolver::Implementation::coupled_step(const Eigen::VectorXd &bu, const Eigen::VectorXd &bv,
+                                                     double &throughput)
+  {
+    const std::size_t n = mesh.n_cells();
+    const double rho = fluid.density;
+    const std::vector<double> F_now = rhie_chow_fluxes();
+    throughput = throughput_of(F_now);
+    double sum = 0;
+    {
+      std::vector<double> imbalance(n, 0.0);
+      for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+        {
+          const double mF = face_mixture_ratio(f, F_now[f]) * F_now[f];
+          imbalance[mesh.owner[f]] += mF;
+          if (mesh.neighbour[f] >= 0)
+            imbalance[mesh.neighbour[f]] -= mF;
+        }
+      for (std::size_t c = 0; c < n; ++c)
+        if (!cavitation || !cavitating[c])
+          sum += std::abs(imbalance[c]);
+    }
+    // rows whose continuity is replaced by a given pressure: cavitating cells, and in a closed domain
+    // (p defined up to a constant; the continuity rows sum to zero) the first cell
+    std::vector<char> pinned(n, 0);
+    for (std::size_t c = 0; c < n; ++c)
+      pinned[c] = cavitation && cavitating[c];
+    if (!has_pressure_boundary)
+      pinned[0] = 1;
+
+    auto &t = coupled_entries;
+    t.clear();
+    Eigen::VectorXd rhs(3 * n);
+    const std::size_t pressure = 2 * n; // offset of p in the unknowns (u, v, p)
+    for (int component = 0; component < 2; ++component)
+      {
+        const SparseMatrix &A = component == 0 ? matrix_u : matrix_v;
+        const std::size_t offset = component * n;
+        for (int column = 0; column < A.outerSize(); ++column)
+          for (SparseMatrix::InnerIterator it(A, column); it; ++it)
+            t.emplace_back(offset + it.row(), offset + it.col(), it.value());
+        rhs.segment(offset, n) = component == 0 ? bu : bv;
+      }
+    const auto &coefficient = mesh.gradient_coefficients();
+    for (std::size_t c = 0; c < n; ++c)
+      for (std::size_t k = mesh.cell_face_offset[c]; k < mesh.cell_face_offset[c + 1]; ++k)
+        {
+          const int other = mesh.cell_face_other[k];
+          if (other < 0)
+            continue;
+          for (int component = 0; component < 2; ++component)
+            {
+              const double a = mesh.cell_volume[c] * coefficient[k][component];
+              t.emplace_back(component * n + c, pressure + other, a);
+              t.emplace_back(component * n + c, pressure + c, -a);
+              rhs[component * n + c] += a * (p[other] - p[c]);
+            }
+        }
+    rhs.segment(pressure, n).setZero();
+    auto continuity = [&](std::size_t row, std::size_t column, double value) {
+      t.emplace_back(pressure + row, column, pinned[row] ? 0.0 : value);
+    };
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+      {
+        const unsigned int P = mesh.owner[f];
+        const Vector2 &nrm = mesh.face_normal[f];
+        const double area = mesh.face_area[f], m = face_mixture_ratio(f, flux[f]);
+        const double ax = rho * area * nrm.x(), ay = rho * area * nrm.y();
+        if (mesh.neighbour[f] >= 0)
+          {
+            const unsigned int N = mesh.neighbour[f];
+            const double w = mesh.face_weight(f);
+            const Vector2 d = mesh.cell_center[N] - mesh.cell_center[P];
+            const double D_f = w * D[P] + (1 - w) * D[N];
+            const double c_f = rho * D_f * area / nrm.dot(d);
+            const double explicit_part = c_f * (w * grad_p[P] + (1 - w) * grad_p[N]).dot(d);
+            for (const auto &[row, sign] : {std::pair<unsigned int, double>{P, m}, {N, -m}})
+              {
+                continuity(row, P, sign * w * ax), continuity(row, N, sign * (1 - w) * ax);
+                continuity(row, n + P, sign * w * ay), continuity(row, n + N, sign * (1 - w) * ay);
+                continuity(row, pressure + P, sign * c_f), continuity(row, pressure + N, -sign * c_f);
+                rhs[pressure + row] -= sign * explicit_part;
+              }
+          }
+        else if (is_pressure_boundary(face_kind[f]))
+          {
+            const Vector2 d = mesh.face_center[f] - mesh.cell_center[P];
+            const double c_b = rho * D[P] * area / nrm.dot(d);
+            continuity(P, P, m * ax), continuity(P, n + P, m * ay), continuity(P, pressure + P, m * c_b);
+            rhs[pressure + P] -= m * (-c_b * p_b[f] + c_b * grad_p[P].dot(d));
+          }
+        else if (face_kind[f] == Kind::velocity_inlet)
+          rhs[pressure + P] -= m * flux[f];
+      }
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        t.emplace_back(pressure + c, pressure + c, pinned[c] ? 1.0 : 0.0);
+        if (pinned[c])
+          rhs[pressure + c] = cavitation && cavitating[c] ? cavitation_pressure : p[c];
+      }
+    if (matrix_coupled.rows() == 0)
+      matrix_coupled.resize(3 * n, 3 * n);
+    matrix_coupled.setFromTriplets(t.begin(), t.end());
+    if (!coupled_analyzed)
+      {
+        coupled_lu.analyzePattern(matrix_coupled); // once per mesh: the pattern does not change
+        coupled_analyzed = true;
+      }
+    coupled_lu.factorize(matrix_coupled);
+    if (coupled_lu.info() != Eigen::Success)
+      throw std::runtime_error("UMFPACK could not factorise the coupled pressure-velocity matrix");
+    const Eigen::VectorXd x = coupled_lu.solve(rhs);
+    if (coupled_lu.info() != Eigen::Success || !x.allFinite())
+      throw std::runtime_error("the coupled pressure-velocity solve failed");
+    const std::vector<double> p_old = p;
+    for (std::size_t c = 0; c < n; ++c)
+      u[c] = x[c], v[c] = x[n + c], p[c] = x[pressure + c];
+    // the fluxes of the solution (the lagged mean gradient and boundary pressures as in the system):
+    // conservative to the LU's round-off
+    flux = rhie_chow_fluxes();
+    // a cycle caught by the cycle test relaxes the pressure update by the factor it lowered the
+    // pressure relaxation (1 until then: the coupled system needs no relaxation of its own)
+    const double beta = pressure_relaxation / settings.pressure_relaxation;
+    for (std::size_t c = 0; c < n; ++c)
+      set_cell_pressure(c, p_old[c] + beta * (p[c] - p_old[c]));
+    return sum;
   }
 
   void SimplecSolver::Implementation::update_face_viscosity()
@@ -1244,10 +1407,12 @@ namespace servodrift::flow
     // the same on the shorter cycle window, which lowers the pressure relaxation
     double cycle_best = window_best, previous_cycle_best = window_best;
     d.pressure_relaxation = d.settings.pressure_relaxation;
+    d.coupled_iterations = d.settings.coupling == FlowSolverParameters::Coupling::coupled;
     std::unique_ptr<AndersonAcceleration> anderson;
     if (d.settings.acceleration_depth > 0)
       anderson = std::make_unique<AndersonAcceleration>(d.settings.acceleration_depth);
     Eigen::VectorXd accelerated_start; // the state the last iteration started from (with acceleration)
+    unsigned int stall_test_from = 0;   // the iteration of a switch to coupled iterations (0: none)
     double smallest_change = std::numeric_limits<double>::infinity();
     // leaves the accelerated phase: the history, its start and the field scales are forgotten
     auto stop_acceleration = [&] {
@@ -1356,17 +1521,34 @@ namespace servodrift::flow
               }
           }
         report.pressure_relaxation = d.pressure_relaxation;
-        const unsigned int window = d.settings.stall_window;
+        // after a switch from SIMPLEC the coupled iterations are judged on the cycle window: they
+        // have no segregation cycle to wait out (the stalls they resolved took 70-160 iterations)
+        const unsigned int window = stall_test_from > 0 && d.settings.cycle_window > 0 ? d.settings.cycle_window :
+                                                                                        d.settings.stall_window;
         bool stalled = false;
         if (window > 0)
           {
             window_best = std::min(window_best, std::max({r.u, r.v, r.continuity, r.k, r.epsilon}));
-            if (it % window == 0)
+            if ((it - stall_test_from) % window == 0)
               {
                 stalled = window_best > 0.5 * previous_window_best;
                 previous_window_best = window_best;
                 window_best = std::numeric_limits<double>::infinity();
               }
+          }
+        if (stalled && !d.coupled_iterations && d.settings.coupling == FlowSolverParameters::Coupling::simplec_then_coupled)
+          {
+            // SIMPLEC is caught in a cycle of its segregation: go on coupled from here, with the
+            // pressure relaxation the setting's again and a fresh stall test
+            d.coupled_iterations = true;
+            d.pressure_relaxation = d.settings.pressure_relaxation;
+            if (anderson)
+              stop_acceleration();
+            window_best = previous_window_best = cycle_best = previous_cycle_best = std::numeric_limits<double>::infinity();
+            if (d.settings.report_interval > 0)
+              std::fprintf(stderr, "  iteration %u: SIMPLEC stalled; coupled iterations from here\n", it);
+            stalled = false;
+            stall_test_from = it;
           }
         if (it >= d.settings.max_iterations || stalled)
           {

@@ -12,6 +12,8 @@ namespace servodrift
     Convection convection;          ///< face values of the convected velocity
     double velocity_relaxation;     ///< alpha_u of the momentum equations [1]
     double pressure_relaxation;     ///< alpha_p of the pressure correction (1 for SIMPLEC) [1]
+    enum class Coupling { simplec, coupled, simplec_then_coupled };
+    Coupling coupling;              ///< pressure-velocity coupling: SIMPLEC, one coupled system, or SIMPLEC until it stalls
     enum class MomentumSolver { bicgstab_jacobi, bicgstab_gauss_seidel, bicgstab_ilu, direct };
     MomentumSolver momentum_solver; ///< linear solver of the momentum (and k, epsilon) equations
     double linear_solver_tolerance; ///< BiCGSTAB's residual reduction of momentum, k and epsilon [1]

@@ -270,6 +270,46 @@ namespace servodrift::flow
     EXPECT_LT(solver.max_cell_imbalance(), 1e-8);
   }
 
+  // The coupled pressure-velocity solver (`Pressure-velocity coupling = coupled') solves the same
+  // discrete equations as SIMPLEC, so it must land on the same fields: through a pipe (velocity inlet,
+  // pressure outlet) and in the closed lid-driven cavity (one cell's continuity replaced by its
+  // pressure). Both converge to scaled residuals of 1e-8, so the fields agree to about that, relative
+  // to the largest velocity: 1e-6 leaves room for the two iterations' different last steps.
+  TEST(FlowCore, CoupledSolverLandsOnSimplecsFields)
+  {
+    auto compare = [](const FvMesh &mesh, const std::map<std::string, BoundaryCondition> &bc, const FluidProperties &fluid,
+                      const char *name) {
+      FlowSolverParameters segregated = settings(), coupled = settings();
+      segregated.coupling = FlowSolverParameters::Coupling::simplec;
+      coupled.coupling = FlowSolverParameters::Coupling::coupled;
+      SimplecSolver a(mesh, fluid, bc, segregated), b(mesh, fluid, bc, coupled);
+      const SolveReport ra = a.solve(), rb = b.solve();
+      double largest = 0, difference = 0;
+      for (std::size_t c = 0; c < mesh.n_cells(); ++c)
+        {
+          largest = std::max(largest, std::hypot(a.velocity_x()[c], a.velocity_y()[c]));
+          difference = std::max({difference, std::abs(a.velocity_x()[c] - b.velocity_x()[c]),
+                                 std::abs(a.velocity_y()[c] - b.velocity_y()[c])});
+        }
+      std::printf("%s: SIMPLEC %u iterations, coupled %u; largest velocity difference %.2e of the largest velocity\n", name,
+                  ra.iterations, rb.iterations, difference / largest);
+      EXPECT_LT(difference / largest, 1e-6) << name;
+      if (b.throughput() > 0) // relative to the inflow: not for the closed cavity
+        EXPECT_LT(b.max_cell_imbalance(), 1e-8) << name;
+    };
+    const double U = 1, R = 1;
+    compare(rectangle(Geometry::axisymmetric, 0, 4, 0, R, 80, 20),
+            pipe_boundaries(BoundaryCondition::velocity_inlet(
+              [&](const Vector2 &x) { return Vector2(2 * U * (1 - x.y() * x.y() / (R * R)), 0); })),
+            {1, 0.01}, "pipe, Re 200");
+    compare(rectangle(Geometry::planar, 0, 1, 0, 1, 24, 24),
+            {{"top", BoundaryCondition::wall(Vector2(1, 0))},
+             {"left", BoundaryCondition::wall()},
+             {"right", BoundaryCondition::wall()},
+             {"bottom", BoundaryCondition::wall()}},
+            {1, 0.01}, "cavity, Re 100");
+  }
+
   // The flapper land in miniature: creeping radial outflow between parallel discs, x across the
   // gap h, r from r1 (inlet, the lubrication profile) to r2 (outlet). The profile
   // v_r = 6 Q/(2 pi r h) (z/h)(1 - z/h) solves the Stokes equations exactly (the hoop term cancels
@@ -527,6 +567,35 @@ namespace servodrift::flow
     EXPECT_CONTAINS(e, "not converged in 5 iterations");
     EXPECT_CONTAINS(e, "tolerance 1e-08");
     EXPECT_TRUE(std::ifstream(solver.failure_output).good());
+  }
+
+  // Without pressure relaxation SIMPLEC settles into a two-iteration cycle on the frictionless
+  // Bernoulli duct (above): with `simplec' the stall test stops it; with `simplec-then-coupled' the
+  // coupled iterations take over at the stall and converge to Bernoulli's flow rate (0.5 %, as above).
+  TEST(FlowCore, StalledSimplecGoesOnCoupled)
+  {
+    const double L = 2, R = 1, mu = 0.01, rho = 1, p0 = 0.5;
+    const FvMesh mesh = rectangle(Geometry::axisymmetric, 0, L, 0, R, 40, 20);
+    std::map<std::string, BoundaryCondition> bc{{"left", BoundaryCondition::total_pressure_inlet(p0)},
+                                                {"right", BoundaryCondition::pressure_outlet(0)},
+                                                {"top", BoundaryCondition::symmetry()},
+                                                {"bottom", BoundaryCondition::axis()}};
+    FlowSolverParameters s = settings();
+    s.pressure_relaxation = 1;
+    s.cycle_window = 0;
+    s.stall_window = 50;
+    s.coupling = FlowSolverParameters::Coupling::simplec;
+    SimplecSolver alone(mesh, {rho, mu}, bc, s);
+    EXPECT_CONTAINS(error_of([&] { alone.solve(); }), "stalled");
+    s.coupling = FlowSolverParameters::Coupling::simplec_then_coupled;
+    SimplecSolver solver(mesh, {rho, mu}, bc, s);
+    const SolveReport report = solver.solve();
+    const double Q = solver.flow_rate("right"), Q_exact = units::pi * R * R * std::sqrt(2 * p0 / rho);
+    std::printf("Bernoulli duct without pressure relaxation, SIMPLEC then coupled: Q/Q_exact - 1 = %.3e (%u iterations)\n",
+                Q / Q_exact - 1, report.iterations);
+    EXPECT_GT(report.iterations, 50u); // SIMPLEC ran until the stall test
+    EXPECT_NEAR(Q / Q_exact, 1, 5e-3);
+    EXPECT_LT(solver.max_cell_imbalance(), 1e-8);
   }
 } // namespace servodrift::flow
 
