@@ -1,9 +1,9 @@
 // Benchmark of the finite-volume solver core (issue 4): laminar axisymmetric pipe flow (Hagen-
 // Poiseuille with a parabolic inlet, R = 1, L = 4 R, Re = rho U 2R / mu = 200) converged to scaled
-// residuals of 1e-8 on about 5, 20 and 80 thousand cells, with the three momentum solvers on the
-// 20-thousand-cell mesh. Prints cells, SIMPLEC iterations, wall time, time per iteration and the
-// pressure-drop error. Not a test.
-//   OMP_THREAD_LIMIT=1 build/bench/bench_flow [repetitions] [largest cells in thousands: 5|20|80] [compare: 1|0]
+// residuals of 1e-8 on about 5, 20 and 80 thousand cells, with the other momentum solvers, the coupled
+// pressure-velocity iterations and two velocity relaxations on the 20-thousand-cell mesh. Prints
+// cells, outer iterations, wall time, time per iteration and the pressure-drop error. Not a test.
+//   OMP_THREAD_LIMIT=1 build/bench/bench_flow [repetitions] [largest cells in thousands: 5|20|80] [compare: 1|0|2]
 #include "common/gmsh_mesh.h"
 #include "common/output_files.h"
 #include "common/valve_description.h"
