@@ -1522,7 +1522,7 @@ namespace servodrift::flow
           }
         report.pressure_relaxation = d.pressure_relaxation;
         // after a switch from SIMPLEC the coupled iterations are judged on the cycle window: they
-        // have no segregation cycle to wait out (the stalls they resolved took 70-160 iterations)
+        // have no segregation cycle to wait out (in the default sweep, the stalls they resolved took 87-215 of them)
         const unsigned int window = stall_test_from > 0 && d.settings.cycle_window > 0 ? d.settings.cycle_window :
                                                                                         d.settings.stall_window;
         bool stalled = false;
@@ -1539,12 +1539,14 @@ namespace servodrift::flow
         if (stalled && !d.coupled_iterations && d.settings.coupling == FlowSolverParameters::Coupling::simplec_then_coupled)
           {
             // SIMPLEC is caught in a cycle of its segregation: go on coupled from here, with the
-            // pressure relaxation the setting's again and a fresh stall test
+            // pressure relaxation the setting's again. The stall test goes on against SIMPLEC's last
+            // window: coupled iterations that have not halved its best residual within their first
+            // window do not resolve this stall either
             d.coupled_iterations = true;
             d.pressure_relaxation = d.settings.pressure_relaxation;
             if (anderson)
               stop_acceleration();
-            window_best = previous_window_best = cycle_best = previous_cycle_best = std::numeric_limits<double>::infinity();
+            window_best = cycle_best = previous_cycle_best = std::numeric_limits<double>::infinity();
             if (d.settings.report_interval > 0)
               std::fprintf(stderr, "  iteration %u: SIMPLEC stalled; coupled iterations from here\n", it);
             stalled = false;
