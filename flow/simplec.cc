@@ -1560,7 +1560,11 @@ namespace servodrift::flow
                                (stalled ? " iterations: stalled (residuals u " : " iterations (residuals u ") + format_number(r.u) + ", v " + format_number(r.v) +
                                      (d.turbulent ? ", k " + format_number(r.k) + ", epsilon " + format_number(r.epsilon) : "") +
                                      ", continuity " + format_number(r.continuity) + "; tolerance " +
-                                     format_number(tolerance) + (settled ? "" : "; monitored quantities still changing") + ")");
+                                     format_number(tolerance) + (settled ? "" : "; monitored quantities still changing") +
+                                     (stall_test_from > 0 ? "; coupled iterations since SIMPLEC stalled at iteration " +
+                                                              std::to_string(stall_test_from) :
+                                                            "") +
+                                     ")");
           }
       }
     d.update_boundary_values();

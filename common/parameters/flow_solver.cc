@@ -49,7 +49,7 @@ namespace servodrift
                       "The run converges when the scaled residuals of both momentum equations and of "
                       "continuity fall below this. [1]");
     prm.declare_entry("Maximum iterations", "5000", Patterns::Integer(1, 10000000),
-                      "SIMPLEC iterations; a run that has not converged by then fails. [1]");
+                      "Outer iterations (SIMPLEC or coupled); a run that has not converged by then fails. [1]");
     prm.declare_entry("Stall window", "1000", Patterns::Integer(0, 10000000),
                       "A run whose largest scaled residual has not fallen by half from one window of this "
                       "many iterations to the next has stalled (a cycle, not a slow convergence) and fails "
