@@ -84,11 +84,12 @@ int main(int argc, char **argv)
   if (!compare)
     return 0;
   const FvMesh mesh = mesh_of(320, 64);
+  FlowSolverParameters coupled = valve.flow_solver;
+  coupled.coupling = FlowSolverParameters::Coupling::coupled;
+  auto print_coupled = [&] { print("coupled pressure-velocity (UMFPACK)", best_of(mesh, coupled)); };
   if (compare == 2)
     {
-      FlowSolverParameters s = valve.flow_solver;
-      s.coupling = FlowSolverParameters::Coupling::coupled;
-      print("coupled pressure-velocity (UMFPACK)", best_of(mesh, s));
+      print_coupled();
       return 0;
     }
   for (auto [solver, name] : {std::make_pair(FlowSolverParameters::MomentumSolver::bicgstab_gauss_seidel, "BiCGSTAB-Gauss-Seidel"),
@@ -99,11 +100,7 @@ int main(int argc, char **argv)
       s.momentum_solver = solver;
       print(name, best_of(mesh, s));
     }
-  {
-    FlowSolverParameters s = valve.flow_solver;
-    s.coupling = FlowSolverParameters::Coupling::coupled;
-    print("coupled pressure-velocity (UMFPACK)", best_of(mesh, s));
-  }
+  print_coupled();
   for (double alpha : {0.8, 0.95})
     {
       FlowSolverParameters s = valve.flow_solver;

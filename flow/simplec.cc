@@ -248,6 +248,7 @@ namespace servodrift::flow
     // in (u, v, p), its pattern fixed per mesh (the same entries, zeros included, at every assembly)
     std::vector<Eigen::Triplet<double>> coupled_entries;
     SparseMatrix matrix_coupled;
+    std::vector<std::ptrdiff_t> coupled_position; ///< per entry of coupled_entries: its place in the values
     Eigen::UmfPackLU<SparseMatrix> coupled_lu;
     bool coupled_analyzed = false;
     bool coupled_iterations = false; ///< this solve iterates coupled (the setting, or SIMPLEC stalled)
@@ -972,13 +973,26 @@ namespace servodrift::flow
         if (pinned[c])
           rhs[pressure + c] = cavitation && cavitating[c] ? cavitation_pressure : p[c];
       }
-    if (matrix_coupled.rows() == 0)
-      matrix_coupled.resize(3 * n, 3 * n);
-    matrix_coupled.setFromTriplets(t.begin(), t.end());
     if (!coupled_analyzed)
       {
-        coupled_lu.analyzePattern(matrix_coupled); // once per mesh: the pattern does not change
+        // once per mesh: the pattern (the entries are the same at every assembly), where each entry
+        // goes in the value array, and the LU's symbolic analysis
+        matrix_coupled.resize(3 * n, 3 * n);
+        matrix_coupled.setFromTriplets(t.begin(), t.end());
+        const int *inner = matrix_coupled.innerIndexPtr(), *outer = matrix_coupled.outerIndexPtr();
+        coupled_position.resize(t.size());
+        for (std::size_t k = 0; k < t.size(); ++k)
+          coupled_position[k] = std::lower_bound(inner + outer[t[k].col()], inner + outer[t[k].col() + 1], t[k].row()) - inner;
+        coupled_lu.analyzePattern(matrix_coupled);
         coupled_analyzed = true;
+      }
+    else
+      {
+        // the values in place (duplicates summed, as setFromTriplets does)
+        double *value = matrix_coupled.valuePtr();
+        std::fill(value, value + matrix_coupled.nonZeros(), 0.0);
+        for (std::size_t k = 0; k < t.size(); ++k)
+          value[coupled_position[k]] += t[k].value();
       }
     coupled_lu.factorize(matrix_coupled);
     if (coupled_lu.info() != Eigen::Success)
