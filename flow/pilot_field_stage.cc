@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -290,8 +291,9 @@ namespace servodrift::flow
     /// start-up and then k-epsilon seeded on laminar fields, 2 000-2 800 iterations at 1.03 MPa, while
     /// a 10 degC step from converged turbulent fields takes 150-900 (doc/performance.md); and going
     /// down in temperature the path enters the laminar cases (lower Reynolds number) from turbulent
-    /// fields, which they leave quickly. Returns the records hottest first.
-    CaseRows orifice_chains(const ValveDescription &valve)
+    /// fields, which they leave quickly. Returns the records hottest first; `temperature_done' is
+    /// called after each temperature (the progress line).
+    CaseRows orifice_chains(const ValveDescription &valve, const std::function<void()> &temperature_done)
     {
       const auto &temperatures = valve.sweeps.table_temperatures;
       const auto dps = scaled(valve.sweeps.field_orifice_pressure_fractions, span(valve));
@@ -306,6 +308,7 @@ namespace servodrift::flow
               if (j == 0 && records.back()[flag] == flags::computed)
                 hotter = chain.last_fields();
             }
+          temperature_done();
         }
       return records;
     }
@@ -367,9 +370,16 @@ namespace servodrift::flow
       const auto &T = valve.sweeps.table_temperatures;
       const std::size_t n = T.size();
       on_rank_zero([&] { prepare_output_directory(flow_directory(valve)); });
+      // the progress line counts temperatures: the orifice's path has n of them, each nozzle chain one
       const CaseRows rows = run_sweep(
-        "flow: fixed orifice and nozzle-flapper chains (field)", n + 1,
-        [&](std::size_t c) { return c == 0 ? orifice_chains(valve) : nozzle_chain(valve, T[n - c]); },
+        "flow: fixed orifice and nozzle-flapper chains (field)", 2 * n, n + 1,
+        [&](std::size_t c, const std::function<void()> &step_done) {
+          if (c == 0)
+            return orifice_chains(valve, step_done);
+          CaseRows records = nozzle_chain(valve, T[n - c]);
+          step_done();
+          return records;
+        },
         valve.output.progress);
       CaseRows orifice, nozzle;
       for (const auto &r : rows)
