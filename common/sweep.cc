@@ -86,7 +86,7 @@ namespace servodrift
     /// that finishes a cheap case takes the next one while another still works on a costly one, so
     /// a sweep whose cases differ in cost (the flow stage's chains: from seconds to minutes) ends
     /// when the work is done, not when the unluckiest fixed share is. The second counter counts the
-    /// finished steps of the cases, for the progress line.
+    /// finished cases, for the progress line.
     class CaseDispenser
     {
     public:
@@ -115,7 +115,7 @@ namespace servodrift
       std::size_t take() { return std::size_t(add(0, 1)); }
       /// No more cases for anyone (a case failed: the sweep fails, the others stop early).
       void close(std::size_t n_cases) { add(0, static_cast<long long>(n_cases)); }
-      /// Counts a finished step; returns how many are finished, this one included.
+      /// Counts a finished case; returns how many are finished, this one included.
       std::size_t finished() { return std::size_t(add(1, 1) + 1); }
 
     private:
@@ -134,22 +134,8 @@ namespace servodrift
   CaseRows run_sweep(const std::string &label, std::size_t n_cases,
                      const std::function<CaseRows(std::size_t)> &compute_case, OutputParameters::Progress mode)
   {
-    return run_sweep(
-      label, n_cases, n_cases,
-      [&](std::size_t k, const std::function<void()> &step_done) {
-        CaseRows rows = compute_case(k);
-        step_done();
-        return rows;
-      },
-      mode);
-  }
-
-  CaseRows run_sweep(const std::string &label, std::size_t n_steps, std::size_t n_cases,
-                     const std::function<CaseRows(std::size_t, const std::function<void()> &)> &compute_case,
-                     OutputParameters::Progress mode)
-  {
     const unsigned int size = mpi_size();
-    Progress progress(label, n_steps, mode);
+    Progress progress(label, n_cases, mode);
 
     // (case index, rows) for the cases of this rank; an error is (case index, message).
     std::vector<std::pair<std::size_t, CaseRows>> mine;
@@ -158,16 +144,13 @@ namespace servodrift
       std::optional<CaseDispenser> dispenser;
       if (size > 1)
         dispenser.emplace();
-      std::size_t next = 0, steps_done = 0; // one rank: the cases in turn
+      std::size_t next = 0; // one rank: the cases in turn
       auto next_case = [&] { return dispenser ? dispenser->take() : next++; };
-      const std::function<void()> step_done = [&] {
-        progress.update(dispenser ? dispenser->finished() : ++steps_done);
-      };
       for (std::size_t k = next_case(); k < n_cases; k = next_case())
         {
           try
             {
-              mine.emplace_back(k, compute_case(k, step_done));
+              mine.emplace_back(k, compute_case(k));
             }
           catch (const std::exception &e)
             {
@@ -176,6 +159,7 @@ namespace servodrift
                 dispenser->close(n_cases);
               break; // the sweep fails; no need to compute more
             }
+          progress.update(dispenser ? dispenser->finished() : next);
         }
     }
 

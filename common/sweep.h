@@ -40,14 +40,6 @@ namespace servodrift
                      const std::function<CaseRows(std::size_t case_index)> &compute_case,
                      OutputParameters::Progress progress);
 
-  /// The same for cases that are made of steps (a continuation path over several temperatures):
-  /// each case calls `step_done' after each of its steps, and the progress line counts the
-  /// `n_steps' steps of all cases over all ranks. So a long case on rank 0, which prints the line,
-  /// does not silence it while the other ranks finish theirs.
-  CaseRows run_sweep(const std::string &label, std::size_t n_steps, std::size_t n_cases,
-                     const std::function<CaseRows(std::size_t case_index, const std::function<void()> &step_done)> &compute_case,
-                     OutputParameters::Progress progress);
-
   /// MPI rank and size of this process in MPI_COMM_WORLD (0 and 1 without MPI).
   unsigned int mpi_rank();
   unsigned int mpi_size();

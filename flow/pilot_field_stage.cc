@@ -14,7 +14,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -131,8 +130,11 @@ namespace servodrift::flow
     class Chain
     {
     public:
-      Chain(const ValveDescription &valve_, PilotGeometry g, double T)
+      /// `speaks': writes the VTU files and the warnings (false on the ranks that repeat a computation
+      /// every rank makes, so that each file and warning is written once).
+      Chain(const ValveDescription &valve_, PilotGeometry g, double T, bool speaks_ = true)
         : valve(valve_)
+        , speaks(speaks_)
         , kind(g)
         , conditions(pilot_field_case(valve_, T))
         , closed_forms(valve_, T)
@@ -167,7 +169,7 @@ namespace servodrift::flow
         else if (last && last_model != t)
           slot->set_fields(*last); // the chain switched model: continue from the other model's fields
         const std::string vtu = flow_directory(valve) + "/" + vtu_name(kind, conditions.temperature, h, dp);
-        failure_output = writes_fields(valve, conditions.temperature) ? vtu : "";
+        failure_output = speaks && writes_fields(valve, conditions.temperature) ? vtu : "";
         slot->set_failure_output(failure_output);
 
         std::vector<double> record(record_length, 0.0);
@@ -197,12 +199,13 @@ namespace servodrift::flow
             last = slot->fields();
             last_model = t;
             last_dp = dp;
-            if (writes_fields(valve, conditions.temperature))
+            if (speaks && writes_fields(valve, conditions.temperature))
               slot->write_vtu(vtu);
           }
         catch (const std::runtime_error &e) // NotConverged or diverged: flagged, the reduced order stands in
           {
-            std::cerr << "servodrift: warning: " << (orifice ? "fixed orifice" : "nozzle-flapper") << " at "
+            if (speaks)
+              std::cerr << "servodrift: warning: " << (orifice ? "fixed orifice" : "nozzle-flapper") << " at "
                       << format_number(conditions.temperature) << " degC"
                       << (orifice ? "" : ", gap " + format_number(h * 1e6) + " um") << ", dp "
                       << format_number(dp * 1e-6) << " MPa (" << model_name(t) << "): " << e.what()
@@ -223,6 +226,29 @@ namespace servodrift::flow
       }
 
       const std::optional<FlowFields> &last_fields() const { return last; }
+
+      /// The chain's last converged state: its fields, their flow model and pressure level.
+      struct State
+      {
+        FlowFields fields;
+        Turbulence model;
+        double pressure_difference;
+      };
+      std::optional<State> state() const
+      {
+        return last ? std::optional<State>(State{*last, last_model, last_dp}) : std::nullopt;
+      }
+      /// Goes on from another chain's state as if this chain had converged to it (the next case
+      /// continues from it, and a failing one is retried through the geometric mean of the levels).
+      void resume(const State &s)
+      {
+        last = s.fields, last_model = s.model, last_dp = s.pressure_difference;
+        PilotFieldCase c = conditions;
+        c.turbulence = s.model;
+        auto &slot = cases[s.model];
+        slot = std::make_unique<PilotField>(valve, kind, c, current_gap > 0 ? current_gap : 0);
+        slot->set_fields(s.fields);
+      }
 
     private:
       /// Continuation step control: a case that does not converge from its starting fields is tried
@@ -273,6 +299,7 @@ namespace servodrift::flow
       }
 
       const ValveDescription &valve;
+      bool speaks;
       PilotGeometry kind;
       PilotFieldCase conditions;
       PilotClosedForms closed_forms;
@@ -284,32 +311,56 @@ namespace servodrift::flow
       std::string failure_output; ///< the VTU of the case being solved, if it fails
     };
 
-    /// The fixed orifice at every table temperature, hottest first, as one continuation path: at each
-    /// temperature over its pressure differences in increasing order, the first of them starting from
-    /// the hotter temperature's first converged fields (the same mesh topology, every dimension at its
-    /// own temperature). Only the hottest case starts from rest. Why: a start from rest is a laminar
-    /// start-up and then k-epsilon seeded on laminar fields, 2 000-2 800 iterations at 1.03 MPa, while
-    /// a 10 degC step from converged turbulent fields takes 150-900 (doc/performance.md); and going
-    /// down in temperature the path enters the laminar cases (lower Reynolds number) from turbulent
-    /// fields, which they leave quickly. Returns the records hottest first; `temperature_done' is
-    /// called after each temperature (the progress line).
-    CaseRows orifice_chains(const ValveDescription &valve, const std::function<void()> &temperature_done)
+    /// The fixed orifice's first case (its lowest pressure difference) at every table temperature, as
+    /// one continuation path: hottest first, each from the hotter temperature's converged fields (the
+    /// same mesh topology, every dimension at its own temperature; `Sweeps/Table temperatures' is
+    /// increasing). Only the hottest case starts from rest. Why: a start from rest is a laminar
+    /// start-up and then k-epsilon seeded on laminar fields, 2 400-2 900 iterations at 1.03 MPa (RV-1),
+    /// while a 10 degC step from converged fields takes 150-870 (doc/performance.md); and going down in
+    /// temperature the path enters the laminar cases (lower Reynolds number) from turbulent fields,
+    /// which they leave quickly. RV-1's 110 degC case stalls from rest and from 100 degC and converges
+    /// from 120 degC.
+    /// Every rank computes this path (about 40 s for RV-1), the same on each, so that each
+    /// temperature's remaining orifice cases are a case of the sweep like any other and go to
+    /// whichever rank is free; rank 0 alone writes its VTU files and warnings.
+    struct OrificeFirstCase
+    {
+      std::vector<double> record;
+      std::optional<Chain::State> state; ///< empty if it did not converge
+    };
+
+    std::vector<OrificeFirstCase> orifice_first_cases(const ValveDescription &valve)
     {
       const auto &temperatures = valve.sweeps.table_temperatures;
-      const auto dps = scaled(valve.sweeps.field_orifice_pressure_fractions, span(valve));
-      CaseRows records;
-      std::optional<FlowFields> hotter; // the first converged fields of the last temperature that has them
-      for (auto T = temperatures.rbegin(); T != temperatures.rend(); ++T)
+      const double dp = valve.sweeps.field_orifice_pressure_fractions.front() * span(valve);
+      std::vector<OrificeFirstCase> first(temperatures.size());
+      Progress progress("flow: fixed orifice's first cases over temperature (field, every rank)", temperatures.size(),
+                        valve.output.progress);
+      std::optional<FlowFields> hotter; // the fields of the last temperature that converged
+      for (std::size_t k = temperatures.size(); k-- > 0;)
         {
-          Chain chain(valve, PilotGeometry::fixed_orifice, *T);
-          for (std::size_t j = 0; j < dps.size(); ++j)
-            {
-              records.push_back(chain.solve(0, dps[j], j == 0 ? hotter : std::nullopt));
-              if (j == 0 && records.back()[flag] == flags::computed)
-                hotter = chain.last_fields();
-            }
-          temperature_done();
+          Chain chain(valve, PilotGeometry::fixed_orifice, temperatures[k], mpi_rank() == 0);
+          first[k].record = chain.solve(0, dp, hotter);
+          first[k].state = chain.state();
+          if (first[k].state)
+            hotter = first[k].state->fields;
+          progress.update(temperatures.size() - k);
         }
+      progress.finish();
+      return first;
+    }
+
+    /// The fixed orifice's other pressure differences at one temperature, in increasing order, from
+    /// the first case's state (or from rest if it failed).
+    CaseRows orifice_chain(const ValveDescription &valve, double T, const OrificeFirstCase &first)
+    {
+      Chain chain(valve, PilotGeometry::fixed_orifice, T);
+      if (first.state)
+        chain.resume(*first.state);
+      CaseRows records;
+      const auto dps = scaled(valve.sweeps.field_orifice_pressure_fractions, span(valve));
+      for (std::size_t j = 1; j < dps.size(); ++j)
+        records.push_back(chain.solve(0, dps[j]));
       return records;
     }
 
@@ -359,32 +410,39 @@ namespace servodrift::flow
       return out;
     }
 
-    /// The orifice's path over all temperatures and the nozzle's chain at each temperature as one
-    /// sweep, so that the ranks share them as one pool (a rank free after a short chain takes the
-    /// next): the orifice's path first, since it is the longest (RV-1: 277 s of the sweep's 571 s of
-    /// CPU), then the nozzle chains in decreasing temperature, since lower viscosity and higher
-    /// Reynolds numbers make the hot chains the longest (RV-1: 62 s at 120 degC, 18 s at 40 degC).
-    /// Returns the orifice's and the nozzle's records, each in increasing temperature.
+    /// The orifice's first cases (orifice_first_cases), then every other chain of both geometries as
+    /// one sweep, so that the ranks share them as one pool (a rank free after a short chain takes
+    /// the next, whatever its geometry): the hottest temperature first, since its lower viscosity and
+    /// higher Reynolds numbers make its chains the longest (RV-1: 120 degC 68 s for the orifice,
+    /// 62 s for the nozzle, against 21 and 18 s at 40 degC), then the others in decreasing
+    /// temperature, each temperature's orifice chain before its nozzle chain. Returns the orifice's
+    /// and the nozzle's records, each in increasing temperature.
     std::pair<CaseRows, CaseRows> run_chains(const ValveDescription &valve)
     {
       const auto &T = valve.sweeps.table_temperatures;
       const std::size_t n = T.size();
       on_rank_zero([&] { prepare_output_directory(flow_directory(valve)); });
-      // the progress line counts temperatures: the orifice's path has n of them, each nozzle chain one
+      const std::vector<OrificeFirstCase> first = orifice_first_cases(valve);
       const CaseRows rows = run_sweep(
-        "flow: fixed orifice and nozzle-flapper chains (field)", 2 * n, n + 1,
-        [&](std::size_t c, const std::function<void()> &step_done) {
-          if (c == 0)
-            return orifice_chains(valve, step_done);
-          CaseRows records = nozzle_chain(valve, T[n - c]);
-          step_done();
-          return records;
+        "flow: fixed orifice and nozzle-flapper chains (field)", 2 * n,
+        [&](std::size_t c) {
+          const std::size_t k = n - 1 - c / 2; // the temperature's index
+          return c % 2 == 0 ? orifice_chain(valve, T[k], first[k]) : nozzle_chain(valve, T[k]);
         },
         valve.output.progress);
-      CaseRows orifice, nozzle;
+      CaseRows other_orifice_cases, nozzle;
       for (const auto &r : rows)
-        (r[geometry] == 0 ? orifice : nozzle).push_back(r);
+        (r[geometry] == 0 ? other_orifice_cases : nozzle).push_back(r);
       const std::size_t orifice_block = valve.sweeps.field_orifice_pressure_fractions.size();
+      if (other_orifice_cases.size() != n * (orifice_block - 1))
+        throw std::logic_error("flow: a field chain returned a wrong number of cases");
+      CaseRows orifice; // hottest first, each temperature's first case before its others
+      for (std::size_t c = 0; c < n; ++c)
+        {
+          orifice.push_back(first[n - 1 - c].record);
+          const auto others = other_orifice_cases.begin() + std::ptrdiff_t(c * (orifice_block - 1));
+          orifice.insert(orifice.end(), others, others + std::ptrdiff_t(orifice_block - 1));
+        }
       const std::size_t nozzle_block =
         valve.sweeps.field_gap_fractions.size() * valve.sweeps.field_nozzle_pressure_fractions.size();
       if (orifice.size() != n * orifice_block || nozzle.size() != n * nozzle_block)

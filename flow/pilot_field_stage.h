@@ -2,13 +2,15 @@
 // Field level of the flow stage (issue 5): the fixed_orifice and nozzle_flapper tables from the
 // finite-volume cases of flow/pilot_field, with continuation.
 //
-// Continuation paths, shared over the MPI ranks as one pool (the tables are the same for any
-// number of ranks): the fixed orifice is one path over all table temperatures, hottest first, at
-// each temperature over its pressure differences in increasing order, each temperature's first case
-// starting from the hotter one's first solution; the nozzle is one chain per table temperature, over
-// its gaps from the null gap outwards (each gap starts from its neighbour's first solution), and at
-// each gap over its pressure differences. The first case of the orifice's path and of each nozzle
-// chain starts up laminar (pilot_field.h); every later one starts from a converged neighbour.
+// Continuation, with the chains shared over the MPI ranks as one pool (the tables are the same for
+// any number of ranks). The fixed orifice's first case (its lowest pressure difference) is one path
+// over all table temperatures, hottest first, each temperature from the hotter one's solution; every
+// rank computes this path. Then one chain per table temperature and geometry, hottest first: the
+// orifice from its first case over its other pressure differences in increasing order; the nozzle
+// over its gaps, from the null gap outwards (each gap starts from its neighbour's first solution),
+// and at each gap over its pressure differences. The orifice's hottest first case and each nozzle
+// chain's first case start up laminar (pilot_field.h); every later one starts from a converged
+// neighbour.
 //
 // Each chain also writes, under <output>/flow/, the VTU of the cases `Output/Flow fields' asks for
 // (with .pvd collections) and flow/field_cases.csv: every computed case with its diagnostics (flow

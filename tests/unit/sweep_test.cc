@@ -6,9 +6,7 @@
 
 #include <chrono>
 #include <cmath>
-#include <functional>
 #include <set>
-#include <string>
 #include <thread>
 
 using namespace servodrift;
@@ -73,32 +71,4 @@ TEST(Sweep, ACostlyCaseDoesNotHoldUpTheOthers)
     {
       EXPECT_EQ(ranks_of_the_others.count(rows[0][1]), 0u) << "the rank busy with case 0 took no other case";
     }
-}
-
-// A case made of steps (the flow stage's orifice path over temperature) reports each step: the
-// progress line moves while that case runs, instead of staying silent until it ends. One rank
-// (the plain lines are at most one per 2 s): case 0 has three steps of 1.1 s, case 1 one step; the
-// line after case 0's second step (2.2 s) must read "case 2 of 4".
-TEST(Sweep, StepsOfALongCaseMoveTheProgressLine)
-{
-  if (mpi_size() > 1)
-    GTEST_SKIP() << "which rank prints, and when, depends on the sharing out";
-  testing::internal::CaptureStderr();
-  const auto rows = run_sweep(
-    "test", 4, 2,
-    [](std::size_t k, const std::function<void()> &step_done) {
-      for (int step = 0; step < (k == 0 ? 3 : 1); ++step)
-        {
-          if (k == 0)
-            std::this_thread::sleep_for(std::chrono::milliseconds(1100));
-          step_done();
-        }
-      return CaseRows{{double(k)}};
-    },
-    OutputParameters::Progress::lines);
-  const std::string log = testing::internal::GetCapturedStderr();
-  ASSERT_EQ(rows.size(), 2u);
-  EXPECT_EQ(rows[1][0], 1.0);
-  EXPECT_NE(log.find("[test] case 2 of 4"), std::string::npos) << log;
-  EXPECT_NE(log.find("[test] 4 cases in"), std::string::npos) << log;
 }
