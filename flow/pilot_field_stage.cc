@@ -413,8 +413,8 @@ namespace servodrift::flow
     /// The orifice's first cases (orifice_first_cases), then every other chain of both geometries as
     /// one sweep, so that the ranks share them as one pool (a rank free after a short chain takes
     /// the next, whatever its geometry): the hottest temperature first, since its lower viscosity and
-    /// higher Reynolds numbers make its chains the longest (RV-1: 120 degC 68 s for the orifice,
-    /// 62 s for the nozzle, against 21 and 18 s at 40 degC), then the others in decreasing
+    /// higher Reynolds numbers make its chains the longest (RV-1: 120 degC 67 s for the orifice,
+    /// 61 s for the nozzle, against 23 and 18 s at 40 degC), then the others in decreasing
     /// temperature, each temperature's orifice chain before its nozzle chain. Returns the orifice's
     /// and the nozzle's records, each in increasing temperature.
     std::pair<CaseRows, CaseRows> run_chains(const ValveDescription &valve)
