@@ -1,21 +1,49 @@
 #!/usr/bin/env bash
-# The tables and drift maps of `mpirun -np 2' are byte-identical to the serial run's.
+# The outputs of `mpirun -np 2' are byte-identical to the serial run's.
+# usage: mpi_identical.sh servodrift mpirun [whole-chain|flow-field]
+#   whole-chain (default): `servodrift run' with the field-level torque motor on a coarse mesh, two
+#     temperatures; its four tables, the fits and the drift maps.
+#   flow-field: `servodrift flow' at the field level. Every rank computes the fixed orifice's first
+#     cases over temperature (one path, hottest first) and the chains that go on from them are shared
+#     over the ranks (flow/pilot_field_stage.h). A small sweep on a coarse mesh: two temperatures, two
+#     orifice pressure levels (so each orifice chain goes on from the path's state), one gap at one
+#     pressure level; every case must converge.
 set -eu
-servodrift=$1 mpirun=$2
+servodrift=$1 mpirun=$2 which=${3:-whole-chain}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# the field-level torque motor on a coarse mesh, two temperatures
-sets=(--set "Output/Plots=false" --set "Torque motor/Field mesh resolution=0.5"
-      --set "Sweeps/Table temperatures=40, 120" --set "Sweeps/Drift temperatures=40, 80, 120"
-      --set "Sweeps/Motor currents=-0.02, 0, 0.02"
-      --set "Sweeps/Deviation angles=-0.05, -0.02, 0, 0.02, 0.05")
-"$servodrift" run "${sets[@]}" -o "$work/serial" > /dev/null
-"$mpirun" -np 2 "$servodrift" run "${sets[@]}" -o "$work/mpi" > "$work/mpi.log" 2>&1 || { cat "$work/mpi.log"; exit 1; }
+case "$which" in
+  whole-chain)
+    command=run
+    sets=(--set "Output/Plots=false" --set "Torque motor/Field mesh resolution=0.5"
+          --set "Sweeps/Table temperatures=40, 120" --set "Sweeps/Drift temperatures=40, 80, 120"
+          --set "Sweeps/Motor currents=-0.02, 0, 0.02"
+          --set "Sweeps/Deviation angles=-0.05, -0.02, 0, 0.02, 0.05")
+    files=(tables/torque_motor.csv tables/spring_tube.csv tables/fixed_orifice.csv tables/nozzle_flapper.csv
+           tables/fits.json system/drift_map.csv system/stage_coefficients.csv system/operating_points.csv) ;;
+  flow-field)
+    command=flow
+    sets=(--set "Pilot stage/Model level=field" --set "Pilot stage/Field mesh resolution=0.6"
+          --set "Output/Flow fields=none" --set "Output/Progress=none"
+          --set "Sweeps/Table temperatures=40, 60" --set "Sweeps/Drift temperatures=40, 60"
+          --set "Sweeps/Field orifice pressure fractions=0.05, 0.25" --set "Sweeps/Field gap fractions=1"
+          --set "Sweeps/Field nozzle pressure fractions=0.5")
+    files=(tables/fixed_orifice.csv tables/nozzle_flapper.csv) ;;
+  *) echo "unknown case '$which'"; exit 2 ;;
+esac
+"$servodrift" "$command" "${sets[@]}" -o "$work/serial" > "$work/serial.log" 2>&1 || { cat "$work/serial.log"; exit 1; }
+"$mpirun" -np 2 "$servodrift" "$command" "${sets[@]}" -o "$work/mpi" > "$work/mpi.log" 2>&1 || { cat "$work/mpi.log"; exit 1; }
 grep -q "on 2 ranks" "$work/mpi.log" || { echo "mpirun did not start 2 ranks"; cat "$work/mpi.log"; exit 1; }
-n=0
-for f in tables/torque_motor.csv tables/spring_tube.csv tables/fixed_orifice.csv tables/nozzle_flapper.csv \
-         tables/fits.json system/drift_map.csv system/stage_coefficients.csv system/operating_points.csv; do
+if [ "$which" = flow-field ]; then
+  for f in tables/fixed_orifice.csv tables/nozzle_flapper.csv; do
+    grep -q "flow/field" "$work/serial/$f" || { echo "$f: not from the field level"; exit 1; }
+  done
+  for f in flow/fixed_orifice_cases.csv flow/nozzle_flapper_cases.csv; do # flag 0: the last column
+    flagged=$(grep -v '^#' "$work/serial/$f" | tail -n +2 | awk -F, '$NF != 0' | wc -l)
+    [ "$flagged" = 0 ] || { echo "$f: $flagged flagged cases"; cat "$work/serial/$f"; exit 1; }
+  done
+fi
+for f in "${files[@]}"; do
   cmp "$work/serial/$f" "$work/mpi/$f"
-  n=$((n + 1))
 done
-echo "ok: $n files byte-identical on 1 and 2 ranks"
+echo "ok: ${#files[@]} files byte-identical on 1 and 2 ranks ($which)"
