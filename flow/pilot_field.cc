@@ -188,6 +188,7 @@ namespace servodrift::flow
       if (previous > 0 && previous != dp)
         solver.scale_pressure_level(dp / previous);
       solver.set_boundary_pressure("inlet", dp);
+      solver.set_turbulent_viscosity_limit(valve.pilot.field_turbulent_viscosity_limit * ideal_reynolds_number(dp));
       at_rest = false;
       if (valve.pilot.field_cavitation)
         solver.set_cavitation_pressure(valve.fluid.vapour_pressure - downstream_pressure(dp));
@@ -276,6 +277,11 @@ namespace servodrift::flow
         r.iterations += report.iterations;
       }
     r.pressure_relaxation = report.pressure_relaxation;
+    if (report.cells_at_viscosity_limit > 0)
+      throw NotConverged(std::string("flow: ") + what + ": converged with the turbulent viscosity held at its limit (" +
+                         format_number(d.valve.pilot.field_turbulent_viscosity_limit) + " Re mu) in " +
+                         std::to_string(report.cells_at_viscosity_limit) +
+                         " cells: not the model's solution; raise `Pilot stage/Field turbulent viscosity limit'");
     const double downstream = d.downstream_pressure(dp);
 
     const double rho = d.conditions.fluid.density, mu = d.conditions.fluid.viscosity;
@@ -290,6 +296,8 @@ namespace servodrift::flow
                    r.minimum_absolute_pressure < d.valve.fluid.vapour_pressure * (1 - 1e-9);
     const auto y_plus = d.solver.wall_y_plus();
     r.max_wall_y_plus = *std::max_element(y_plus.begin(), y_plus.end());
+    for (const double mu_t : d.solver.turbulent_viscosity())
+      r.max_turbulent_viscosity_ratio = std::max(r.max_turbulent_viscosity_ratio, mu_t / mu);
 
     if (d.kind == PilotGeometry::fixed_orifice)
       {

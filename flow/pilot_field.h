@@ -46,6 +46,7 @@ namespace servodrift::flow
     /// with cavitation: some cell cavitates; without: the lowest absolute pressure is below the vapour pressure (C12)
     bool cavitating = false;
     double max_wall_y_plus = 0;           ///< largest y+ of a wall-adjacent cell centre [1]
+    double max_turbulent_viscosity_ratio = 0; ///< largest mu_t/mu of a cell (0 if laminar) [1]
     unsigned int iterations = 0;          ///< SIMPLEC iterations of this solve (start-up included)
     unsigned int coarse_mesh_iterations = 0; ///< grid sequencing: iterations on the coarser meshes first
     double pressure_relaxation = 0; ///< the pressure relaxation the solve ended with (lowered by caught cycles) [1]

@@ -46,6 +46,7 @@ namespace servodrift::flow
       minimum_absolute_pressure,
       cavitating,
       max_wall_y_plus,
+      max_turbulent_viscosity_ratio,
       iterations,
       model,
       flag,
@@ -194,6 +195,7 @@ namespace servodrift::flow
             record[minimum_absolute_pressure] = r.minimum_absolute_pressure;
             record[cavitating] = r.cavitating ? 1 : 0;
             record[max_wall_y_plus] = r.max_wall_y_plus;
+            record[max_turbulent_viscosity_ratio] = r.max_turbulent_viscosity_ratio;
             record[iterations] = r.iterations;
             record[flag] = flags::computed;
             last = slot->fields();
@@ -478,6 +480,7 @@ namespace servodrift::flow
                        "minimum_absolute_pressure[Pa]",
                        "below_vapour_pressure[1]",
                        "max_wall_y_plus[1]",
+                       "max_turbulent_viscosity_ratio[1]",
                        "iterations[1]",
                        "wall_time[s]",
                        "flag[1]"};
@@ -493,6 +496,7 @@ namespace servodrift::flow
                                 cell(r[land_force], !orifice && converged), cell(r[jet_force], !orifice && converged),
                                 cell(r[bore_pressure], !orifice && converged), cell(r[minimum_absolute_pressure], converged),
                                 cell(r[cavitating], converged), cell(r[max_wall_y_plus], converged),
+                                cell(r[max_turbulent_viscosity_ratio], converged),
                                 cell(r[iterations], converged), cell(r[wall_time]), cell(r[flag])});
             if (converged && writes_fields(valve, r[temperature]))
               datasets.emplace_back(datasets.size(), vtu_name(g, r[temperature], r[gap], r[pressure_difference]));

@@ -148,6 +148,8 @@ namespace servodrift::flow
     // turbulence: k, epsilon~ (Launder-Sharma), the turbulent viscosity mu_t per cell, and the
     // effective viscosity mu + mu_t per face (the laminar mu at walls)
     bool turbulent = false;
+    double viscosity_ratio_limit = 1e5; ///< mu_t <= this mu (set_turbulent_viscosity_limit)
+    std::size_t cells_at_viscosity_limit = 0; ///< in the last turbulence step
     std::vector<double> k, epsilon, mu_t, k_b, epsilon_b, mu_face;
     SparseMatrix matrix_k, matrix_epsilon;
 
@@ -1292,7 +1294,9 @@ namespace servodrift::flow
     r.epsilon /= std::max(scale, 1e-300);
     solve_iteratively(matrix_epsilon, b, epsilon, "epsilon");
 
-    // bounded, then the turbulent viscosity (relaxed, at most 1e5 mu)
+    // bounded, then the turbulent viscosity (relaxed, at most the limit)
+    const double mu_t_limit = viscosity_ratio_limit * mu;
+    cells_at_viscosity_limit = 0;
     for (std::size_t c = 0; c < n; ++c)
       {
         k[c] = std::max(k[c], k_floor);
@@ -1313,7 +1317,8 @@ namespace servodrift::flow
               time_scale = std::min(time_scale, settings.realizability_coefficient / (std::sqrt(6.0) * C_mu * std::max(strain[c], 1e-300)));
             target = lambda * rho * C_mu * k[c] * time_scale + (1 - lambda) * rho * C_mu * std::sqrt(k[c]) * l_mu;
           }
-        mu_t[c] += settings.turbulent_viscosity_relaxation * (std::min(target, 1e5 * mu) - mu_t[c]);
+        cells_at_viscosity_limit += target > mu_t_limit;
+        mu_t[c] += settings.turbulent_viscosity_relaxation * (std::min(target, mu_t_limit) - mu_t[c]);
       }
   }
 
@@ -1584,6 +1589,7 @@ namespace servodrift::flow
     d.update_boundary_values();
     d.grad_p = d.mesh.gradient(d.p, d.p_b);
     d.update_boundary_values();
+    report.cells_at_viscosity_limit = d.turbulent ? d.cells_at_viscosity_limit : 0;
     return report;
   }
 
@@ -1700,6 +1706,22 @@ namespace servodrift::flow
   }
 
   void SimplecSolver::initialize_from(const SimplecSolver &other) { set_fields(other.fields()); }
+
+  void SimplecSolver::set_turbulent_viscosity_limit(double ratio)
+  {
+    if (!(ratio > 0))
+      throw std::invalid_argument("flow: turbulent viscosity limit " + format_number(ratio) + " must be > 0");
+    auto &d = *impl;
+    d.viscosity_ratio_limit = ratio;
+    if (!d.turbulent)
+      return;
+    // at once, so that the next iteration's residuals see the change (the relaxed mu_t is not a
+    // residual of its own: a converged state would otherwise pass the test before mu_t moved)
+    const double limit = ratio * d.fluid.viscosity;
+    for (double &mu_t : d.mu_t)
+      mu_t = std::min(mu_t, limit);
+    d.update_face_viscosity();
+  }
 
   void SimplecSolver::set_cavitation_pressure(double p_cav)
   {

@@ -65,6 +65,9 @@ namespace servodrift::flow
     unsigned int iterations = 0;
     Residuals residuals;
     double pressure_relaxation = 0; ///< at the end: lowered from the setting by each cycle caught [1]
+    /// k-epsilon: cells whose turbulent viscosity the last iteration held at the limit
+    /// (set_turbulent_viscosity_limit) instead of the model's value
+    std::size_t cells_at_viscosity_limit = 0;
   };
 
   /// The iteration limit was reached (the fields are usable as a start, not as a result).
@@ -117,6 +120,11 @@ namespace servodrift::flow
     /// `Vapour density ratio')); it is liquid again where its inflow fills it. Call before each solve
     /// whose reference pressure changes (the vapour pressure is absolute).
     void set_cavitation_pressure(double p_cav);
+    /// k-epsilon: the largest turbulent viscosity, as a multiple of the molecular one (1e5 unless
+    /// set; applies to the current fields at once). The model's mu_t is held at this limit where it
+    /// would exceed it; a converged state with cells at the limit
+    /// (SolveReport::cells_at_viscosity_limit) is not the model's solution.
+    void set_turbulent_viscosity_limit(double ratio);
     /// Liquid volume fraction per cell (all 1 without cavitation).
     std::vector<double> liquid_fraction() const;
 

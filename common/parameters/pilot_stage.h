@@ -27,6 +27,7 @@ namespace servodrift
     double field_resolution;        ///< multiplies every cell count [1]
     bool field_grid_sequencing;     ///< a fine case from rest starts from the half-resolution solution
     double field_continuation_ratio; ///< largest ratio of successive pressure levels of a solution path [1]
+    double field_turbulent_viscosity_limit; ///< largest mu_t/mu on a solution path / ideal Re [1]
     double field_plenum_size;       ///< orifice plenum radius and length / bore radius [1]
     double field_chamber_length;    ///< orifice downstream chamber length / bore radius [1]
     double field_outlet_radius;     ///< nozzle-flapper outlet radius / land radius [1]

@@ -677,6 +677,20 @@ namespace servodrift::flow
     EXPECT_NEAR(f / blasius, 1, 0.10);
     EXPECT_GT(largest_mu_t / (rho * U * 2 * R / Re), 10); // the flow is turbulent, not laminar
     EXPECT_LT(solver.max_cell_imbalance(), 1e-8);
+    EXPECT_EQ(report.cells_at_viscosity_limit, 0u); // the default bound, 1e5 mu, is far away
+
+    // a bound below the converged mu_t holds it there and is reported: that state is not the
+    // model's solution (the pilot stage refuses it), and the friction factor shows it
+    const double mu = rho * U * 2 * R / Re, bound = 0.5 * largest_mu_t / mu;
+    solver.set_turbulent_viscosity_limit(bound);
+    const SolveReport held = solver.solve();
+    double held_largest = 0;
+    for (double m : solver.turbulent_viscosity())
+      held_largest = std::max(held_largest, m / mu);
+    std::printf("  held at %.0f mu: %zu cells at the bound, mu_t/mu up to %.1f, %u iterations\n", bound,
+                held.cells_at_viscosity_limit, held_largest, held.iterations);
+    EXPECT_GT(held.cells_at_viscosity_limit, 0u);
+    EXPECT_LE(held_largest, bound * (1 + 1e-9));
 
     // the VTU carries the turbulence fields
     const std::string file = test::temporary_directory() + "/turbulent_pipe.vtu";

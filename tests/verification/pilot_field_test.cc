@@ -413,6 +413,36 @@ namespace servodrift::flow
     EXPECT_LT(test::relative(orifice_wide.discharge_coefficient, orifice.discharge_coefficient), 0.005);
   }
 
+  // The turbulent viscosity limit (`Pilot stage/Field turbulent viscosity limit', a multiple of the
+  // case's ideal-velocity Reynolds number) bounds transients only. RV-1's nozzle at its null with
+  // k-epsilon (gap Re about 2 500, mu_t/mu up to about 14 converged): with the default 0.1 Re
+  // (about 250) the limit is nowhere reached at convergence, and the answer is the one with the
+  // solver's own bound of 1e5 mu (C_dn and force identical to 1e-9: the limit is not reached
+  // anywhere on the path either); with 1e-3 Re (about 2.5) it holds mu_t in the jet, and the
+  // converged case is refused as not the model's solution (NotConverged, flagged by the stage).
+  TEST(PilotField, TurbulentViscosityLimitBoundsTransientsOnly)
+  {
+    ValveDescription v = test::valve({"Flow solver/Turbulence model=k-epsilon"});
+    const PilotFieldResult bounded = nozzle_at_null(v, 40e-6);
+    v.pilot.field_turbulent_viscosity_limit = 1e5; // far above any Re: the solver's own bound of 1e5 mu
+    const PilotFieldResult unbounded = nozzle_at_null(v, 40e-6);
+    std::printf("k-epsilon nozzle at the null: C_dn %.6f (limit 0.1 Re) vs %.6f (1e5 Re), F %.6f vs %.6f N\n",
+                bounded.discharge_coefficient, unbounded.discharge_coefficient, bounded.flapper_force,
+                unbounded.flapper_force);
+    EXPECT_LT(test::relative(bounded.discharge_coefficient, unbounded.discharge_coefficient), 1e-9);
+    EXPECT_LT(test::relative(bounded.flapper_force, unbounded.flapper_force), 1e-9);
+    v.pilot.field_turbulent_viscosity_limit = 1e-3;
+    try
+      {
+        nozzle_at_null(v, 40e-6);
+        ADD_FAILURE() << "a case converged with mu_t held at the limit was accepted";
+      }
+    catch (const NotConverged &e)
+      {
+        EXPECT_NE(std::string(e.what()).find("turbulent viscosity held at its limit"), std::string::npos) << e.what();
+      }
+  }
+
   // A case that does not converge within the iteration limit becomes a flagged row (flag 2) that
   // carries the reduced-order value, never a silent number; no-flow rows are exact limits (flag 3).
   TEST(PilotFieldStage, UnconvergedCasesAreFlaggedRows)
