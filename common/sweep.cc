@@ -27,6 +27,13 @@ namespace servodrift
     return dealii::Utilities::MPI::job_supports_mpi() ? dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 1;
   }
 
+  std::vector<char> broadcast_bytes(const std::vector<char> &bytes, unsigned int root)
+  {
+    if (mpi_size() == 1)
+      return bytes;
+    return dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, bytes, root);
+  }
+
   namespace
   {
     std::string seconds(double s)

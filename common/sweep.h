@@ -40,6 +40,11 @@ namespace servodrift
                      const std::function<CaseRows(std::size_t case_index)> &compute_case,
                      OutputParameters::Progress progress);
 
+  /// The bytes of rank `root' on every rank: a result one rank computed in a sweep that the others
+  /// need afterwards (the fields a later sweep's cases start from). Without MPI, or on one rank,
+  /// `bytes' itself.
+  std::vector<char> broadcast_bytes(const std::vector<char> &bytes, unsigned int root);
+
   /// MPI rank and size of this process in MPI_COMM_WORLD (0 and 1 without MPI).
   unsigned int mpi_rank();
   unsigned int mpi_size();

@@ -131,11 +131,8 @@ namespace servodrift::flow
     class Chain
     {
     public:
-      /// `speaks': writes the VTU files and the warnings (false on the ranks that repeat a computation
-      /// every rank makes, so that each file and warning is written once).
-      Chain(const ValveDescription &valve_, PilotGeometry g, double T, bool speaks_ = true)
+      Chain(const ValveDescription &valve_, PilotGeometry g, double T)
         : valve(valve_)
-        , speaks(speaks_)
         , kind(g)
         , conditions(pilot_field_case(valve_, T))
         , closed_forms(valve_, T)
@@ -170,7 +167,7 @@ namespace servodrift::flow
         else if (last && last_model != t)
           slot->set_fields(*last); // the chain switched model: continue from the other model's fields
         const std::string vtu = flow_directory(valve) + "/" + vtu_name(kind, conditions.temperature, h, dp);
-        failure_output = speaks && writes_fields(valve, conditions.temperature) ? vtu : "";
+        failure_output = writes_fields(valve, conditions.temperature) ? vtu : "";
         slot->set_failure_output(failure_output);
 
         std::vector<double> record(record_length, 0.0);
@@ -201,13 +198,12 @@ namespace servodrift::flow
             last = slot->fields();
             last_model = t;
             last_dp = dp;
-            if (speaks && writes_fields(valve, conditions.temperature))
+            if (writes_fields(valve, conditions.temperature))
               slot->write_vtu(vtu);
           }
         catch (const std::runtime_error &e) // NotConverged or diverged: flagged, the reduced order stands in
           {
-            if (speaks)
-              std::cerr << "servodrift: warning: " << (orifice ? "fixed orifice" : "nozzle-flapper") << " at "
+            std::cerr << "servodrift: warning: " << (orifice ? "fixed orifice" : "nozzle-flapper") << " at "
                       << format_number(conditions.temperature) << " degC"
                       << (orifice ? "" : ", gap " + format_number(h * 1e6) + " um") << ", dp "
                       << format_number(dp * 1e-6) << " MPa (" << model_name(t) << "): " << e.what()
@@ -301,7 +297,6 @@ namespace servodrift::flow
       }
 
       const ValveDescription &valve;
-      bool speaks;
       PilotGeometry kind;
       PilotFieldCase conditions;
       PilotClosedForms closed_forms;
@@ -321,10 +316,7 @@ namespace servodrift::flow
     /// while a 10 degC step from converged fields takes 150-870 (doc/performance.md); and going down in
     /// temperature the path enters the laminar cases (lower Reynolds number) from turbulent fields,
     /// which they leave quickly. RV-1's 110 degC case stalls from rest and from 100 degC and converges
-    /// from 120 degC.
-    /// Every rank computes this path (about 40 s for RV-1), the same on each, so that each
-    /// temperature's remaining orifice cases are a case of the sweep like any other and go to
-    /// whichever rank is free; rank 0 alone writes its VTU files and warnings.
+    /// from 120 degC. One rank computes it, as one case of the first sweep (run_chains).
     struct OrificeFirstCase
     {
       std::vector<double> record;
@@ -336,29 +328,99 @@ namespace servodrift::flow
       const auto &temperatures = valve.sweeps.table_temperatures;
       const double dp = valve.sweeps.field_orifice_pressure_fractions.front() * span(valve);
       std::vector<OrificeFirstCase> first(temperatures.size());
-      Progress progress("flow: fixed orifice's first cases over temperature (field, every rank)", temperatures.size(),
-                        valve.output.progress);
       std::optional<FlowFields> hotter; // the fields of the last temperature that converged
       for (std::size_t k = temperatures.size(); k-- > 0;)
         {
-          Chain chain(valve, PilotGeometry::fixed_orifice, temperatures[k], mpi_rank() == 0);
+          Chain chain(valve, PilotGeometry::fixed_orifice, temperatures[k]);
           first[k].record = chain.solve(0, dp, hotter);
           first[k].state = chain.state();
           if (first[k].state)
             hotter = first[k].state->fields;
-          progress.update(temperatures.size() - k);
         }
-      progress.finish();
       return first;
+    }
+
+    /// The path's states as bytes, for broadcast_bytes from the rank that computed them: per
+    /// temperature whether it converged, then its fields (each array with its length), model and
+    /// pressure level.
+    std::vector<char> pack_states(const std::vector<OrificeFirstCase> &first)
+    {
+      static_assert(sizeof(FlowFields) == 280, "a member added to FlowFields must be packed here and unpacked below");
+      std::vector<char> out;
+      auto raw = [&](const void *data, std::size_t bytes) {
+        const char *c = static_cast<const char *>(data);
+        out.insert(out.end(), c, c + bytes);
+      };
+      auto value = [&](auto x) { raw(&x, sizeof x); };
+      auto array = [&](const auto &v) { value(v.size()), raw(v.data(), v.size() * sizeof(v[0])); };
+      value(first.size());
+      for (const auto &f : first)
+        {
+          value(f.state.has_value());
+          if (!f.state)
+            continue;
+          const FlowFields &x = f.state->fields;
+          for (const auto *v : {&x.u, &x.v, &x.p, &x.flux, &x.k, &x.epsilon, &x.turbulent_viscosity, &x.face_area,
+                                &x.liquid_fraction})
+            array(*v);
+          array(x.cavitating);
+          value(x.density), value(x.turbulent), value(x.boundary_pressures.size());
+          for (const auto &[patch, pressure] : x.boundary_pressures)
+            array(patch), value(pressure);
+          value(f.state->model), value(f.state->pressure_difference);
+        }
+      return out;
+    }
+
+    std::vector<std::optional<Chain::State>> unpack_states(const std::vector<char> &in)
+    {
+      std::size_t at = 0;
+      auto raw = [&](void *data, std::size_t bytes) {
+        if (at + bytes > in.size())
+          throw std::logic_error("flow: the orifice path's states arrived truncated");
+        std::copy(in.begin() + std::ptrdiff_t(at), in.begin() + std::ptrdiff_t(at + bytes), static_cast<char *>(data));
+        at += bytes;
+      };
+      auto value = [&](auto &x) { raw(&x, sizeof x); };
+      auto array = [&](auto &v) {
+        std::size_t n = 0;
+        value(n);
+        v.resize(n);
+        raw(v.data(), n * sizeof(v[0]));
+      };
+      std::size_t n = 0;
+      value(n);
+      std::vector<std::optional<Chain::State>> states(n);
+      for (auto &state : states)
+        {
+          bool converged = false;
+          value(converged);
+          if (!converged)
+            continue;
+          Chain::State s;
+          FlowFields &x = s.fields;
+          for (auto *v : {&x.u, &x.v, &x.p, &x.flux, &x.k, &x.epsilon, &x.turbulent_viscosity, &x.face_area,
+                          &x.liquid_fraction})
+            array(*v);
+          array(x.cavitating);
+          std::size_t patches = 0;
+          value(x.density), value(x.turbulent), value(patches);
+          x.boundary_pressures.resize(patches);
+          for (auto &[patch, pressure] : x.boundary_pressures)
+            array(patch), value(pressure);
+          value(s.model), value(s.pressure_difference);
+          state = std::move(s);
+        }
+      return states;
     }
 
     /// The fixed orifice's other pressure differences at one temperature, in increasing order, from
     /// the first case's state (or from rest if it failed).
-    CaseRows orifice_chain(const ValveDescription &valve, double T, const OrificeFirstCase &first)
+    CaseRows orifice_chain(const ValveDescription &valve, double T, const std::optional<Chain::State> &first)
     {
       Chain chain(valve, PilotGeometry::fixed_orifice, T);
-      if (first.state)
-        chain.resume(*first.state);
+      if (first)
+        chain.resume(*first);
       CaseRows records;
       const auto dps = scaled(valve.sweeps.field_orifice_pressure_fractions, span(valve));
       for (std::size_t j = 1; j < dps.size(); ++j)
@@ -412,39 +474,61 @@ namespace servodrift::flow
       return out;
     }
 
-    /// The orifice's first cases (orifice_first_cases), then every other chain of both geometries as
-    /// one sweep, so that the ranks share them as one pool (a rank free after a short chain takes
-    /// the next, whatever its geometry): the hottest temperature first, since its lower viscosity and
-    /// higher Reynolds numbers make its chains the longest (RV-1: 120 degC 67 s for the orifice,
-    /// 61 s for the nozzle, against 23 and 18 s at 40 degC), then the others in decreasing
-    /// temperature, each temperature's orifice chain before its nozzle chain. Returns the orifice's
-    /// and the nozzle's records, each in increasing temperature.
+    /// Two sweeps, each shared over the MPI ranks as one pool (`common/sweep': a free rank takes the
+    /// next case): first the orifice's path over temperature (orifice_first_cases, one case, on one
+    /// rank) beside the nozzle chains; then the orifice chains, each from its temperature's state on
+    /// the path, which the rank that computed it hands to the others (broadcast_bytes). Each pool
+    /// takes the hottest temperature first, since its lower viscosity and higher Reynolds numbers
+    /// make its chains the longest (RV-1: 120 degC 61 s for the nozzle against 18 s at 40 degC).
+    /// Why two sweeps: the orifice chains cannot start before the path has reached their
+    /// temperature, and a sweep's cases are independent; with the path computed on every rank
+    /// instead (so that one sweep held all 18 chains), each rank spent its 45 s (doc/performance.md).
+    /// Returns the orifice's and the nozzle's records, each in increasing temperature.
     std::pair<CaseRows, CaseRows> run_chains(const ValveDescription &valve)
     {
       const auto &T = valve.sweeps.table_temperatures;
       const std::size_t n = T.size();
       on_rank_zero([&] { prepare_output_directory(flow_directory(valve)); });
-      const std::vector<OrificeFirstCase> first = orifice_first_cases(valve);
-      const CaseRows rows = run_sweep(
-        "flow: fixed orifice and nozzle-flapper chains (field)", 2 * n,
+      std::vector<OrificeFirstCase> first; // on the rank that computes the path
+      const CaseRows path_and_nozzle = run_sweep(
+        "flow: fixed orifice's path over temperature and nozzle-flapper chains (field)", n + 1,
         [&](std::size_t c) {
-          const std::size_t k = n - 1 - c / 2; // the temperature's index
-          return c % 2 == 0 ? orifice_chain(valve, T[k], first[k]) : nozzle_chain(valve, T[k]);
+          if (c > 0)
+            return nozzle_chain(valve, T[n - c]);
+          first = orifice_first_cases(valve);
+          CaseRows records;
+          for (const auto &f : first)
+            records.push_back(f.record);
+          records.push_back({double(mpi_rank())}); // the rank that holds the path's states
+          return records;
         },
         valve.output.progress);
-      CaseRows other_orifice_cases, nozzle;
-      for (const auto &r : rows)
-        (r[geometry] == 0 ? other_orifice_cases : nozzle).push_back(r);
+      const unsigned int root = static_cast<unsigned int>(path_and_nozzle.at(n).at(0));
+      std::vector<char> bytes;
+      if (mpi_rank() == root)
+        bytes = pack_states(first);
+      const std::vector<std::optional<Chain::State>> states = unpack_states(broadcast_bytes(bytes, root));
+      if (states.size() != n)
+        throw std::logic_error("flow: the orifice path returned a wrong number of states");
+      const CaseRows other_orifice_cases = run_sweep(
+        "flow: fixed orifice chains (field)", n,
+        [&](std::size_t c) {
+          const std::size_t k = n - 1 - c; // the temperature's index, hottest first
+          return orifice_chain(valve, T[k], states[k]);
+        },
+        valve.output.progress);
+
       const std::size_t orifice_block = valve.sweeps.field_orifice_pressure_fractions.size();
       if (other_orifice_cases.size() != n * (orifice_block - 1))
         throw std::logic_error("flow: a field chain returned a wrong number of cases");
       CaseRows orifice; // hottest first, each temperature's first case before its others
       for (std::size_t c = 0; c < n; ++c)
         {
-          orifice.push_back(first[n - 1 - c].record);
+          orifice.push_back(path_and_nozzle[n - 1 - c]);
           const auto others = other_orifice_cases.begin() + std::ptrdiff_t(c * (orifice_block - 1));
           orifice.insert(orifice.end(), others, others + std::ptrdiff_t(orifice_block - 1));
         }
+      const CaseRows nozzle(path_and_nozzle.begin() + std::ptrdiff_t(n + 1), path_and_nozzle.end()); // hottest first
       const std::size_t nozzle_block =
         valve.sweeps.field_gap_fractions.size() * valve.sweeps.field_nozzle_pressure_fractions.size();
       if (orifice.size() != n * orifice_block || nozzle.size() != n * nozzle_block)

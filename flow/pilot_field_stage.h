@@ -2,11 +2,12 @@
 // Field level of the flow stage (issue 5): the fixed_orifice and nozzle_flapper tables from the
 // finite-volume cases of flow/pilot_field, with continuation.
 //
-// Continuation, with the chains shared over the MPI ranks as one pool (the tables are the same for
-// any number of ranks). The fixed orifice's first case (its lowest pressure difference) is one path
-// over all table temperatures, hottest first, each temperature from the hotter one's solution; every
-// rank computes this path. Then one chain per table temperature and geometry, hottest first: the
-// orifice from its first case over its other pressure differences in increasing order; the nozzle
+// Continuation, with the chains shared over the MPI ranks (the tables are the same for any number
+// of ranks). The fixed orifice's first case (its lowest pressure difference) is one path over all
+// table temperatures, hottest first, each temperature from the hotter one's solution; one rank
+// computes it while the others take the nozzle chains, and hands its states to the others. Then one
+// chain per table temperature and geometry, hottest first: the orifice from its first case over its
+// other pressure differences in increasing order (a second sweep, after the path); the nozzle
 // over its gaps, from the null gap outwards (each gap starts from its neighbour's first solution),
 // and at each gap over its pressure differences. The orifice's hottest first case and each nozzle
 // chain's first case start up laminar (pilot_field.h); every later one starts from a converged
