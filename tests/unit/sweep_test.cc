@@ -72,3 +72,18 @@ TEST(Sweep, ACostlyCaseDoesNotHoldUpTheOthers)
       EXPECT_EQ(ranks_of_the_others.count(rows[0][1]), 0u) << "the rank busy with case 0 took no other case";
     }
 }
+
+TEST(Sweep, BroadcastBytesHandsOneRanksResultToAll)
+{
+  // what the flow stage does with the orifice path's states: the rank that computed a case's
+  // result (here the last rank) hands it to every rank; the others pass nothing
+  const unsigned int root = mpi_size() - 1;
+  std::vector<char> bytes;
+  if (mpi_rank() == root)
+    for (int k = 0; k < 100000; ++k) // larger than one message buffer
+      bytes.push_back(char(k % 251));
+  const std::vector<char> received = broadcast_bytes(bytes, root);
+  ASSERT_EQ(received.size(), 100000u);
+  for (int k = 0; k < 100000; k += 997)
+    EXPECT_EQ(received[std::size_t(k)], char(k % 251));
+}
