@@ -11,6 +11,12 @@
 #include "flow/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,6 +24,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -231,6 +238,11 @@ namespace servodrift::flow
         FlowFields fields;
         Turbulence model;
         double pressure_difference;
+        template <class Archive>
+        void serialize(Archive &archive, unsigned int)
+        {
+          archive &fields &model &pressure_difference;
+        }
       };
       std::optional<State> state() const
       {
@@ -308,6 +320,25 @@ namespace servodrift::flow
       std::string failure_output; ///< the VTU of the case being solved, if it fails
     };
 
+  } // namespace
+} // namespace servodrift::flow
+
+namespace boost::serialization
+{
+  // the fields a chain continues from, for handing the orifice path's states between ranks
+  template <class Archive>
+  void serialize(Archive &archive, servodrift::flow::FlowFields &x, unsigned int)
+  {
+    static_assert(sizeof(x) == 280, "a member added to FlowFields must be serialised here");
+    archive &x.u &x.v &x.p &x.flux &x.k &x.epsilon &x.turbulent_viscosity &x.face_area &x.density &x.boundary_pressures
+      &x.turbulent &x.liquid_fraction &x.cavitating;
+  }
+} // namespace boost::serialization
+
+namespace servodrift::flow
+{
+  namespace
+  {
     /// The fixed orifice's first case (its lowest pressure difference) at every table temperature, as
     /// one continuation path: hottest first, each from the hotter temperature's converged fields (the
     /// same mesh topology, every dimension at its own temperature; `Sweeps/Table temperatures' is
@@ -340,78 +371,38 @@ namespace servodrift::flow
       return first;
     }
 
-    /// The path's states as bytes, for broadcast_bytes from the rank that computed them: per
-    /// temperature whether it converged, then its fields (each array with its length), model and
-    /// pressure level.
+    /// The path's states as bytes, for broadcast_bytes from the rank that computed them (boost
+    /// serialization, as common/sweep's gathering of rows; the members of FlowFields and State below).
     std::vector<char> pack_states(const std::vector<OrificeFirstCase> &first)
     {
-      static_assert(sizeof(FlowFields) == 280, "a member added to FlowFields must be packed here and unpacked below");
-      std::vector<char> out;
-      auto raw = [&](const void *data, std::size_t bytes) {
-        const char *c = static_cast<const char *>(data);
-        out.insert(out.end(), c, c + bytes);
-      };
-      auto value = [&](auto x) { raw(&x, sizeof x); };
-      auto array = [&](const auto &v) { value(v.size()), raw(v.data(), v.size() * sizeof(v[0])); };
-      value(first.size());
+      std::vector<char> converged; // per temperature (a std::optional has no boost serialisation)
+      std::vector<Chain::State> states;
       for (const auto &f : first)
         {
-          value(f.state.has_value());
-          if (!f.state)
-            continue;
-          const FlowFields &x = f.state->fields;
-          for (const auto *v : {&x.u, &x.v, &x.p, &x.flux, &x.k, &x.epsilon, &x.turbulent_viscosity, &x.face_area,
-                                &x.liquid_fraction})
-            array(*v);
-          array(x.cavitating);
-          value(x.density), value(x.turbulent), value(x.boundary_pressures.size());
-          for (const auto &[patch, pressure] : x.boundary_pressures)
-            array(patch), value(pressure);
-          value(f.state->model), value(f.state->pressure_difference);
+          converged.push_back(f.state.has_value());
+          if (f.state)
+            states.push_back(*f.state);
         }
-      return out;
+      std::ostringstream out;
+      boost::archive::binary_oarchive archive(out);
+      archive << converged << states;
+      const std::string bytes = out.str();
+      return {bytes.begin(), bytes.end()};
     }
 
-    std::vector<std::optional<Chain::State>> unpack_states(const std::vector<char> &in)
+    std::vector<std::optional<Chain::State>> unpack_states(const std::vector<char> &bytes)
     {
-      std::size_t at = 0;
-      auto raw = [&](void *data, std::size_t bytes) {
-        if (at + bytes > in.size())
-          throw std::logic_error("flow: the orifice path's states arrived truncated");
-        std::copy(in.begin() + std::ptrdiff_t(at), in.begin() + std::ptrdiff_t(at + bytes), static_cast<char *>(data));
-        at += bytes;
-      };
-      auto value = [&](auto &x) { raw(&x, sizeof x); };
-      auto array = [&](auto &v) {
-        std::size_t n = 0;
-        value(n);
-        v.resize(n);
-        raw(v.data(), n * sizeof(v[0]));
-      };
-      std::size_t n = 0;
-      value(n);
-      std::vector<std::optional<Chain::State>> states(n);
-      for (auto &state : states)
-        {
-          bool converged = false;
-          value(converged);
-          if (!converged)
-            continue;
-          Chain::State s;
-          FlowFields &x = s.fields;
-          for (auto *v : {&x.u, &x.v, &x.p, &x.flux, &x.k, &x.epsilon, &x.turbulent_viscosity, &x.face_area,
-                          &x.liquid_fraction})
-            array(*v);
-          array(x.cavitating);
-          std::size_t patches = 0;
-          value(x.density), value(x.turbulent), value(patches);
-          x.boundary_pressures.resize(patches);
-          for (auto &[patch, pressure] : x.boundary_pressures)
-            array(patch), value(pressure);
-          value(s.model), value(s.pressure_difference);
-          state = std::move(s);
-        }
-      return states;
+      std::istringstream in(std::string(bytes.begin(), bytes.end()));
+      boost::archive::binary_iarchive archive(in);
+      std::vector<char> converged;
+      std::vector<Chain::State> states;
+      archive >> converged >> states;
+      std::vector<std::optional<Chain::State>> out(converged.size());
+      auto next = states.begin();
+      for (std::size_t k = 0; k < converged.size(); ++k)
+        if (converged[k])
+          out[k] = std::move(*next++);
+      return out;
     }
 
     /// The fixed orifice's other pressure differences at one temperature, in increasing order, from

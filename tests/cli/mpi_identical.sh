@@ -3,9 +3,10 @@
 # usage: mpi_identical.sh servodrift mpirun [whole-chain|flow-field]
 #   whole-chain (default): `servodrift run' with the field-level torque motor on a coarse mesh, two
 #     temperatures; its four tables, the fits and the drift maps.
-#   flow-field: `servodrift flow' at the field level. Every rank computes the fixed orifice's first
-#     cases over temperature (one path, hottest first) and the chains that go on from them are shared
-#     over the ranks (flow/pilot_field_stage.h). A small sweep on a coarse mesh: two temperatures, two
+#   flow-field: `servodrift flow' at the field level. One rank computes the fixed orifice's first
+#     cases over temperature (one path, hottest first) beside the nozzle chains and hands their fields
+#     to the others; the orifice chains that go on from them are shared over the ranks
+#     (flow/pilot_field_stage.h). A small sweep on a coarse mesh: two temperatures, two
 #     orifice pressure levels (so each orifice chain goes on from the path's state), one gap at one
 #     pressure level; every case must converge.
 set -eu
