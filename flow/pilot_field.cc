@@ -109,9 +109,15 @@ namespace servodrift::flow
       return b;
     }
 
-    FlowSolverParameters with_model(FlowSolverParameters s, FlowSolverParameters::Turbulence t)
+    /// The valve's flow solver settings for a case of this geometry with flow model t (the nozzle's
+    /// own stall window, `Pilot stage/Nozzle stall window').
+    FlowSolverParameters solver_settings(const ValveDescription &valve, PilotGeometry kind,
+                                         FlowSolverParameters::Turbulence t)
     {
+      FlowSolverParameters s = valve.flow_solver;
       s.turbulence = t;
+      if (kind == PilotGeometry::nozzle_flapper)
+        s.stall_window = valve.pilot.nozzle_stall_window;
       return s;
     }
   } // namespace
@@ -141,7 +147,7 @@ namespace servodrift::flow
       , conditions(c)
       , gap(h)
       , mesh(make_mesh(valve_, kind_, c, h, bore_radius))
-      , solver(mesh, c.fluid, boundaries(kind_), with_model(valve_.flow_solver, c.turbulence))
+      , solver(mesh, c.fluid, boundaries(kind_), solver_settings(valve_, kind_, c.turbulence))
       , continuation_ratio(valve_.pilot.field_continuation_ratio)
     {
       if (kind == PilotGeometry::nozzle_flapper)
@@ -226,7 +232,7 @@ namespace servodrift::flow
     unsigned int start_up(double dp)
     {
       const double Re = ideal_reynolds_number(dp);
-      FlowSolverParameters s = with_model(valve.flow_solver, FlowSolverParameters::Turbulence::laminar);
+      FlowSolverParameters s = solver_settings(valve, kind, FlowSolverParameters::Turbulence::laminar);
       s.tolerance = std::max(s.tolerance, start_up_tolerance);
       SimplecSolver laminar(mesh, conditions.fluid, boundaries(kind), s);
       laminar.failure_output = solver.failure_output;

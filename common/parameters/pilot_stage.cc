@@ -95,6 +95,13 @@ namespace servodrift
     prm.declare_entry("Nozzle transition Reynolds number", "2000", Patterns::Double(0, 1e9),
                       "Field level, automatic flow model: the ideal-velocity gap Reynolds number 2 h "
                       "sqrt(2 dp/rho)/nu from which the nozzle-flapper case runs k-epsilon. [1]");
+    prm.declare_entry("Nozzle stall window", "250", Patterns::Integer(0, 10000000),
+                      "Field level: `Flow solver/Stall window' for the nozzle-flapper cases (the fixed "
+                      "orifice keeps the Flow solver's). Their SIMPLEC stalls are flat plateaus (cells at a "
+                      "cavity's edge flickering between liquid and vapour, continuity near 1e-2) that the "
+                      "coupled iterations, cheap on the nozzle's small mesh, converge in about 100; with "
+                      "1000 such a case waited 2 000 iterations, with 250 about 500, the same answer. On "
+                      "the orifice the same window made the sweep slower (doc/performance.md). [-]");
     prm.declare_entry("Fixed orifice law", "lichtarowicz", Patterns::Selection("lichtarowicz|paper-fit"),
                       "Reduced-order fixed-orifice discharge coefficient: lichtarowicz (E21, RV-1) or "
                       "paper-fit (the paper's cubic E26 in Re_0, clamped to its window Re_0 in "
@@ -142,6 +149,7 @@ namespace servodrift
     fixed_orifice_transition_reynolds = prm.get_double("Fixed orifice transition Reynolds number");
     nozzle_flow_model = model_of("Nozzle flow model");
     nozzle_transition_reynolds = prm.get_double("Nozzle transition Reynolds number");
+    nozzle_stall_window = static_cast<unsigned int>(prm.get_integer("Nozzle stall window"));
     fixed_orifice_law =
       prm.get("Fixed orifice law") == "paper-fit" ? OrificeLaw::paper_fit : OrificeLaw::lichtarowicz;
     nozzle_law = prm.get("Nozzle law") == "paper-fit" ? NozzleLaw::paper_fit : NozzleLaw::curtain;

@@ -39,6 +39,7 @@ namespace servodrift
     double fixed_orifice_transition_reynolds; ///< [1]
     FlowModel nozzle_flow_model;
     double nozzle_transition_reynolds;        ///< [1]
+    unsigned int nozzle_stall_window;         ///< Flow solver's stall window for the nozzle cases [1]
 
     OrificeLaw fixed_orifice_law;
     NozzleLaw nozzle_law;

@@ -443,6 +443,29 @@ namespace servodrift::flow
       }
   }
 
+  // `Pilot stage/Nozzle stall window' is the nozzle cases' stall window, and the orifice's stays the
+  // Flow solver's. A window of 20 calls the nozzle's SIMPLEC stalled within a few windows: with
+  // SIMPLEC alone the case fails as stalled, while the orifice with the same valve converges; with
+  // the default coupling it goes on coupled to the same answer as SIMPLEC's (one fixed point: within
+  // 1e-6, the solver tolerance). (A window of 3 went coupled in the start-up's first transient and
+  // diverged there: the window is for plateaus, not transients.)
+  TEST(PilotField, NozzleStallWindowIsTheNozzles)
+  {
+    ValveDescription v = laminar_valve();
+    const PilotFieldResult simplec = nozzle_at_null(v, 40e-6);
+    v.pilot.nozzle_stall_window = 20;
+    const PilotFieldResult coupled = nozzle_at_null(v, 40e-6);
+    std::printf("laminar nozzle at the null: C_dn %.7f, F %.6f N in %u iterations (default stall window) vs "
+                "C_dn %.7f, F %.6f N in %u (window 20)\n",
+                simplec.discharge_coefficient, simplec.flapper_force, simplec.iterations,
+                coupled.discharge_coefficient, coupled.flapper_force, coupled.iterations);
+    EXPECT_LT(test::relative(coupled.discharge_coefficient, simplec.discharge_coefficient), 1e-6);
+    EXPECT_LT(test::relative(coupled.flapper_force, simplec.flapper_force), 1e-6);
+    v.flow_solver.coupling = FlowSolverParameters::Coupling::simplec;
+    EXPECT_THROW(nozzle_at_null(v, 40e-6), NotConverged);
+    EXPECT_NO_THROW(orifice_laminar(v));
+  }
+
   // A case that does not converge within the iteration limit becomes a flagged row (flag 2) that
   // carries the reduced-order value, never a silent number; no-flow rows are exact limits (flag 3).
   TEST(PilotFieldStage, UnconvergedCasesAreFlaggedRows)
