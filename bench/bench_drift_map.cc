@@ -43,7 +43,7 @@ int main(int argc, char **argv)
   const int repetitions = argc > 1 ? std::atoi(argv[1]) : 5;
   const std::string dir = (std::filesystem::temp_directory_path() / "servodrift-bench").string();
   const ValveDescription valve = load_valve_description("", {"Output/Directory=" + dir, "Output/Progress=none",
-                                                              "Output/Plots=false"});
+                                                              "Output/Plots=false", "Pilot stage/Model level=reduced-order"});
   const auto tables = time_it(repetitions, [&] {
     magnetics::run(valve);
     structure::run(valve);

@@ -9,10 +9,11 @@ namespace servodrift
   void PilotStageParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection(subsection);
-    prm.declare_entry("Model level", "reduced-order", Patterns::Selection("reduced-order|field"),
+    prm.declare_entry("Model level", "field", Patterns::Selection("reduced-order|field"),
                       "Which model computes the fixed_orifice and nozzle_flapper tables (D13): "
                       "'reduced-order' is E21-E23; 'field' is the axisymmetric finite-volume solution of "
-                      "meshes/fixed_orifice.geo and meshes/nozzle_flapper.geo (4.2, D11). [-]");
+                      "meshes/fixed_orifice.geo and meshes/nozzle_flapper.geo (4.2, D11), about 5 min on "
+                      "2 cores for the default sweep (doc/performance.md). [-]");
     prm.declare_entry("Fixed orifice diameter", "0.225e-3", Patterns::Double(0, 0.1),
                       "Bore diameter D_0 of each fixed (inlet) orifice (E17, E31). [m]");
     prm.declare_entry("Fixed orifice length", "0.50e-3", Patterns::Double(0, 0.1),
@@ -89,9 +90,12 @@ namespace servodrift
                       "k-epsilon. Below about 1000 the laminar solution is steady and follows "
                       "Lichtarowicz (E21); above, it stops converging (the jet is unsteady) while the "
                       "two-layer model still gives the laminar C_d at 1000-1400 (doc/validation.md). [1]");
-    prm.declare_entry("Nozzle flow model", "automatic", Patterns::Selection(models),
+    prm.declare_entry("Nozzle flow model", "k-epsilon", Patterns::Selection(models),
                       "Field level: flow model of the nozzle-flapper cases (D11), as for the fixed "
-                      "orifice; automatic switches at the nozzle transition Reynolds number. [-]");
+                      "orifice; automatic switches at the nozzle transition Reynolds number. k-epsilon "
+                      "for every case (the paper's model) keeps the flapper force smooth in gap and "
+                      "temperature: with automatic, the cases around the null change model with "
+                      "temperature and K_f(T) jumps by 12 % (doc/validation.md). [-]");
     prm.declare_entry("Nozzle transition Reynolds number", "2000", Patterns::Double(0, 1e9),
                       "Field level, automatic flow model: the ideal-velocity gap Reynolds number 2 h "
                       "sqrt(2 dp/rho)/nu from which the nozzle-flapper case runs k-epsilon. [1]");

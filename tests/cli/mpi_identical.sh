@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The outputs of `mpirun -np 2' are byte-identical to the serial run's.
 # usage: mpi_identical.sh servodrift mpirun [whole-chain|flow-field]
-#   whole-chain (default): `servodrift run' with the field-level torque motor on a coarse mesh, two
-#     temperatures; its four tables, the fits and the drift maps.
+#   whole-chain (default): `servodrift run' with the field-level torque motor on a coarse mesh and the
+#     reduced-order pilot stage (the field-level flow is the other case), two temperatures; its four
+#     tables, the fits and the drift maps.
 #   flow-field: `servodrift flow' at the field level. One rank computes the fixed orifice's first
 #     cases over temperature (one path, hottest first) beside the nozzle chains and hands their fields
 #     to the others; the orifice chains that go on from them are shared over the ranks
@@ -17,6 +18,7 @@ case "$which" in
   whole-chain)
     command=run
     sets=(--set "Output/Plots=false" --set "Torque motor/Field mesh resolution=0.5"
+          --set "Pilot stage/Model level=reduced-order"
           --set "Sweeps/Table temperatures=40, 120" --set "Sweeps/Drift temperatures=40, 80, 120"
           --set "Sweeps/Motor currents=-0.02, 0, 0.02"
           --set "Sweeps/Deviation angles=-0.05, -0.02, 0, 0.02, 0.05")

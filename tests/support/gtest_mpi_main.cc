@@ -7,8 +7,41 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <system_error>
+#include <unistd.h>
+
+namespace
+{
+  /// Open MPI 4.1 singletons that start or end at the same moment race for the session directory
+  /// they share under /tmp (open-mpi/ompi#8510: "A call to mkdir was unable to create the desired
+  /// directory ... File exists"; `ctest -j2' hit it once). A test process that mpirun did not start
+  /// gets a session directory of its own (tests/CMakeLists.txt does the same for the command-line
+  /// tests), removed when it ends, after MPI_Finalize.
+  struct PrivateMpiSessionDirectory
+  {
+    std::filesystem::path path;
+    PrivateMpiSessionDirectory()
+    {
+      if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("OMPI_MCA_orte_tmpdir_base") != nullptr)
+        return;
+      path = std::filesystem::temp_directory_path() / ("servodrift-test-mpi-" + std::to_string(::getpid()));
+      ::setenv("OMPI_MCA_orte_tmpdir_base", path.c_str(), 1);
+    }
+    ~PrivateMpiSessionDirectory()
+    {
+      std::error_code ignored;
+      if (!path.empty())
+        std::filesystem::remove_all(path, ignored);
+    }
+  };
+} // namespace
+
 int main(int argc, char **argv)
 {
+  const PrivateMpiSessionDirectory session; // before MPI_Init, removed after MPI_Finalize
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   ::testing::InitGoogleTest(&argc, argv);
   const int result = RUN_ALL_TESTS();

@@ -40,8 +40,9 @@ namespace servodrift::test
 
   ValveDescription valve(std::vector<std::string> overrides)
   {
-    // the reduced-order torque motor and spring tube unless a test asks for the field level (the
-    // system-model tests compare with model.md's closed-form figures)
+    // the reduced-order torque motor, spring tube and pilot stage unless a test asks for the field
+    // level (the system-model tests compare with model.md's closed-form figures)
+    overrides.insert(overrides.begin(), "Pilot stage/Model level=reduced-order");
     overrides.insert(overrides.begin(), "Torque motor/Model level=reduced-order");
     overrides.insert(overrides.begin(), "Spring tube/Model level=reduced-order");
     overrides.push_back("Output/Directory=" + temporary_directory());
