@@ -105,7 +105,7 @@ namespace servodrift
                       "cavity's edge flickering between liquid and vapour, continuity near 1e-2) that the "
                       "coupled iterations, cheap on the nozzle's small mesh, converge in about 100; with "
                       "1000 such a case waited 2 000 iterations, with 250 about 500, the same answer. On "
-                      "the orifice the same window made the sweep slower (doc/performance.md). [-]");
+                      "the orifice the same window made the sweep slower (doc/performance.md). 0: never. [1]");
     prm.declare_entry("Fixed orifice law", "lichtarowicz", Patterns::Selection("lichtarowicz|paper-fit"),
                       "Reduced-order fixed-orifice discharge coefficient: lichtarowicz (E21, RV-1) or "
                       "paper-fit (the paper's cubic E26 in Re_0, clamped to its window Re_0 in "
