@@ -39,7 +39,6 @@ namespace servodrift::flow
     /// flow/field_cases.csv are built.
     enum Field : std::size_t
     {
-      geometry,
       temperature,
       gap,
       pressure_difference,
@@ -178,7 +177,6 @@ namespace servodrift::flow
         slot->set_failure_output(failure_output);
 
         std::vector<double> record(record_length, 0.0);
-        record[geometry] = orifice ? 0 : 1;
         record[temperature] = conditions.temperature;
         record[gap] = h;
         record[pressure_difference] = dp;
