@@ -43,6 +43,7 @@ namespace servodrift
       FlowSolverParameters::declare_parameters(prm);
       OffsetParameters::declare_parameters(prm);
       SweepParameters::declare_parameters(prm);
+      DynamicsParameters::declare_parameters(prm);
       FitParameters::declare_parameters(prm);
       OutputParameters::declare_parameters(prm);
     }
@@ -60,6 +61,7 @@ namespace servodrift
       v.flow_solver.parse_parameters(prm);
       v.offsets.parse_parameters(prm);
       v.sweeps.parse_parameters(prm);
+      v.dynamics.parse_parameters(prm);
       v.fits.parse_parameters(prm);
       v.output.parse_parameters(prm);
     }

@@ -3,6 +3,7 @@
 // through deal.II's ParameterHandler in one subsection per part (model.md section 2, decisions of
 // section 0). Defaults are the built-in valve RV-1, so no input file is needed.
 #include "common/parameters/armature.h"
+#include "common/parameters/dynamics.h"
 #include "common/parameters/fits.h"
 #include "common/parameters/flow_solver.h"
 #include "common/parameters/fluid.h"
@@ -34,6 +35,7 @@ namespace servodrift
     FlowSolverParameters flow_solver;
     OffsetParameters offsets;
     SweepParameters sweeps;
+    DynamicsParameters dynamics;
     FitParameters fits;
     OutputParameters output;
 

@@ -28,8 +28,9 @@ namespace servodrift::flow
         const double p_s = valve.operating.supply_pressure, p_r = valve.operating.return_pressure;
         const double dx = 1e-3 * g.null_gap;
         auto force = [&](double gap) {
-          const double p = bridge_pressure([&](double dp0) { return fixed_orifice(dp0).flow_rate; },
-                                           [&](double dpn) { return momentum_nozzle(gap, dpn).flow_rate; }, p_s, p_r);
+          const double p = bridge_pressure(
+            [&](double p_c) { return fixed_orifice(p_s - p_c).flow_rate - momentum_nozzle(gap, p_c - p_r).flow_rate; },
+            p_s, p_r);
           return momentum_nozzle(gap, p - p_r).flapper_force;
         };
         // F_L - F_R = F(x0 - x_f) - F(x0 + x_f): its slope at x_f = 0 is -2 F'(x0)

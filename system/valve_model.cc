@@ -5,6 +5,10 @@
 #include "common/root_finding.h"
 #include "common/thermal_laws.h"
 
+#include <functional>
+#include <stdexcept>
+#include <utility>
+
 #include <algorithm>
 #include <cmath>
 
@@ -34,13 +38,27 @@ namespace servodrift::system
     return "?";
   }
 
+  ValveState OperatingPoint::state() const
+  {
+    ValveState s;
+    s.angle = angle;
+    s.left_pressure = bridge.left_pressure;
+    s.right_pressure = bridge.right_pressure;
+    s.spool_displacement = spool.displacement;
+    s.brake_pressure = spool.brake_pressure;
+    s.coil_current = current;
+    return s;
+  }
+
   ValveModel::ValveModel(const ValveDescription &valve_, const StageTables &tables)
     : valve(valve_)
     , f(tables)
-    , p_s(valve_.operating.supply_pressure)
-    , p_r(valve_.operating.return_pressure)
-    , r(valve_.armature.pivot_to_nozzle_distance)
   {}
+
+  ValveEquations ValveModel::equations(double T, const Offsets &offsets) const
+  {
+    return ValveEquations(valve, f, T, offsets);
+  }
 
   double ValveModel::null_gap(double T) const
   {
@@ -51,17 +69,21 @@ namespace servodrift::system
 
   BridgeState ValveModel::bridge(double T, double x_f) const
   {
+    return bridge(equations(T), x_f);
+  }
+
+  BridgeState ValveModel::bridge(const ValveEquations &eq, double x_f) const
+  {
+    const double x0 = eq.null_gap(), p_s = eq.supply_pressure(), p_r = eq.return_pressure();
     BridgeState b;
-    const double x0 = null_gap(T);
     // A gap that is zero up to rounding (flapper on a nozzle) is exactly zero.
     b.left_gap = std::max(0.0, x0 - x_f);
     b.right_gap = std::max(0.0, x0 + x_f);
-    const auto orifice_flow = [&](double dp) { return f.orifice_conductance(T, dp) * std::sqrt(dp); }; // E31
     auto half_bridge = [&](double gap, double &pressure, double &flow, double &force) {
-      const auto nozzle_flow = [&](double dp) { return f.nozzle_conductance(T, gap, dp) * std::sqrt(dp); }; // E32
-      pressure = bridge_pressure(orifice_flow, nozzle_flow, p_s, p_r);
-      flow = nozzle_flow(pressure - p_r);
-      force = f.flapper_force(T, gap, pressure - p_r);
+      // E33 at rest: no spool motion, no net inflow
+      pressure = bridge_pressure([&](double p) { return eq.cavity_inflow(gap, p, 0.0); }, p_s, p_r);
+      flow = eq.nozzle_flow(gap, pressure - p_r);
+      force = eq.flapper_force(gap, pressure - p_r);
     };
     half_bridge(b.left_gap, b.left_pressure, b.left_flow, b.left_force);
     half_bridge(b.right_gap, b.right_pressure, b.right_flow, b.right_force);
@@ -70,54 +92,79 @@ namespace servodrift::system
 
   SpoolSolution ValveModel::spool(double T, double dp_c) const
   {
-    // E35, static, brake port blocked: A_v dp_c - A_fb (p_B - p_r) - k_s x_v - F_s0 = 0. The steady
-    // flow force vanishes: an open edge of a blocked port carries no pressure drop. p_B(x_v) follows
-    // from Q_B = 0 (E36): vented (p_B = p_r) below -x_ov, open to supply (p_B = p_s) above x_ov, and
-    // in the lap the laminar leakage across the two overlaps (conductance ~ 1/overlap length, same
-    // clearance) divides the supply: p_B - p_r = (p_s - p_r)(x_ov + x_v)/(2 x_ov).
-    const auto &s = valve.spool;
-    const auto areas = laws::spool_geometry(s, valve.expansion, T, valve.operating.reference_temperature);
-    const double A_v = areas.control_area, A_fb = areas.feedback_area;
-    const double x_ov = s.overlap, k = s.spring_rate, stroke = s.stroke_limit, span = p_s - p_r;
-    const double drive = A_v * dp_c - s.spring_preload;
-    const auto residual = [&](double x, double p_B) { return drive - A_fb * (p_B - p_r) - k * x; };
-    const auto lap_pressure = [&](double x) { return p_r + span * (x_ov + x) / (2 * x_ov); };
+    return spool(equations(T), dp_c);
+  }
 
-    SpoolSolution out;
-    if (residual(-x_ov, p_r) <= 0) // vented
-      {
-        out = {k > 0 ? drive / k : -stroke, p_r, SpoolState::vented};
-        if (out.displacement <= -stroke)
-          out = {-stroke, p_r, SpoolState::on_negative_stop};
-      }
-    else if (residual(x_ov, p_s) >= 0) // open to supply
-      {
-        out = {k > 0 ? (drive - A_fb * span) / k : stroke, p_s, SpoolState::at_supply};
-        if (out.displacement >= stroke)
-          out = {stroke, p_s, SpoolState::on_positive_stop};
-      }
-    else // regulating in the lap: residual linear in x
-      {
-        const double x = (drive - 0.5 * A_fb * span) / (k + A_fb * span / (2 * x_ov));
-        out = {x, lap_pressure(x), SpoolState::regulating};
-      }
-    return out;
+  namespace
+  {
+    /// Widens [lo, hi] outwards in doubling steps until the falling function g changes sign on it:
+    /// g(lo) > 0 > g(hi). Used where a stiff stop holds a part just past its limit. Returns g(lo), g(hi).
+    std::pair<double, double> bracket_falling(const std::function<double(double)> &g, double &lo, double &hi,
+                                              double first_step, const char *what)
+    {
+      double g_lo = g(lo), g_hi = g(hi);
+      for (double step = first_step; g_lo <= 0 && step < 1e18 * first_step; step *= 2)
+        {
+          hi = lo;
+          g_hi = g_lo;
+          lo -= step;
+          g_lo = g(lo);
+        }
+      for (double step = first_step; g_hi >= 0 && step < 1e18 * first_step; step *= 2)
+        {
+          lo = hi;
+          g_lo = g_hi;
+          hi += step;
+          g_hi = g(hi);
+        }
+      if (!(g_lo >= 0 && g_hi <= 0))
+        throw std::runtime_error(std::string(what) + ": no balance found past the stops");
+      return {g_lo, g_hi};
+    }
+  } // namespace
+
+  SpoolSolution ValveModel::spool(const ValveEquations &eq, double dp_c) const
+  {
+    // E35 at rest, brake port blocked: the spool's net force vanishes, with the brake pressure that
+    // the port's own flow balance gives at each x_v (E36, E37 at rest). The brake inflow falls with
+    // p_B from >= 0 at p_r to <= 0 at p_s, and the net force falls with x_v, so both roots are unique.
+    // In the lap the two land leakages divide the supply, p_B - p_r = (p_s - p_r)(x_ov + x_v)/(2 x_ov);
+    // open to return (supply), the other land's leakage lifts p_B above p_r (below p_s) by a few Pa.
+    const double p_s = eq.supply_pressure(), p_r = eq.return_pressure();
+    const double x_ov = eq.overlap(), stroke = eq.stroke_limit();
+    const auto brake_pressure = [&](double x) {
+      const auto inflow = [&](double p) { return eq.brake_inflow(x, p); };
+      return find_root(inflow, p_r, p_s, inflow(p_r), inflow(p_s), 1e-13 * (p_s - p_r), "brake port flow balance (E36)");
+    };
+    const auto net_force = [&](double x) { return eq.spool_net_force(x, 0.0, dp_c, brake_pressure(x)); };
+    double lo = -stroke, hi = stroke;
+    const auto [f_lo, f_hi] = bracket_falling(net_force, lo, hi, 1e-6 * stroke, "spool force balance (E35)");
+    const double x = find_root(net_force, lo, hi, f_lo, f_hi, 1e-13 * stroke, "spool force balance (E35)");
+    const SpoolState state = x >= stroke ? SpoolState::on_positive_stop :
+                             x <= -stroke ? SpoolState::on_negative_stop :
+                             x < -x_ov    ? SpoolState::vented :
+                             x > x_ov     ? SpoolState::at_supply :
+                                            SpoolState::regulating;
+    return {x, brake_pressure(x), state};
   }
 
   OperatingPoint ValveModel::solve(double T, double i, const Offsets &o) const
   {
-    const double K_a = f.stiffness(T);
-    const double x0 = null_gap(T);
-    // E29 static with E39: motor torque - spring-tube torque - flapper torque = 0
-    BridgeState last;
+    return solve(equations(T, o), i);
+  }
+
+  OperatingPoint ValveModel::solve(const ValveEquations &eq, double i) const
+  {
+    const double T = eq.temperature(), x0 = eq.null_gap();
+    const Offsets &o = eq.offsets();
+    // E29 at rest with E39: motor torque - spring-tube torque - flapper torque (+ nozzle contact) = 0
     const auto net_torque = [&](double theta) {
-      last = bridge(T, r * theta - o.hydraulic_null);
-      return f.torque(T, theta - o.magnetic_null, i) - K_a * (theta - o.spring_tube_rest_angle) -
-             r * (last.left_force - last.right_force);
+      const BridgeState b = bridge(eq, eq.flapper_displacement(theta));
+      return eq.net_torque(theta, 0.0, b.left_pressure, b.right_pressure, i);
     };
 
     // Bracket: the nozzle contacts (x_f = -+ x0), narrowed to what the tables cover.
-    double lo = (o.hydraulic_null - x0) / r, hi = (o.hydraulic_null + x0) / r;
+    double lo = eq.angle_of(-x0), hi = eq.angle_of(x0);
     bool lo_is_contact = true, hi_is_contact = true;
     auto narrow = [&](double table_lo, double table_hi) {
       if (table_lo > lo)
@@ -126,12 +173,13 @@ namespace servodrift::system
         hi = table_hi, hi_is_contact = false;
     };
     const auto &angles = f.torque.axis(1);
-    narrow(o.magnetic_null + angles.front(), o.magnetic_null + angles.back());
+    const double angle_lo = o.magnetic_null + angles.front(), angle_hi = o.magnetic_null + angles.back();
+    narrow(angle_lo, angle_hi);
     const auto &gaps = f.nozzle_conductance.axis(1);
     // left gap x0 - x_f and right gap x0 + x_f both within [gap_min, gap_max]
     const double x_f_lo = std::max(x0 - gaps.back(), gaps.front() - x0);
     const double x_f_hi = std::min(x0 - gaps.front(), gaps.back() - x0);
-    narrow((x_f_lo + o.hydraulic_null) / r, (x_f_hi + o.hydraulic_null) / r);
+    narrow(eq.angle_of(x_f_lo), eq.angle_of(x_f_hi));
     if (!(lo < hi))
       throw TableRangeError("the tables leave no armature angle for the flapper at " + format_number(T) +
                             " degC (torque_motor angles and nozzle_flapper gaps do not overlap the flapper travel)");
@@ -146,39 +194,41 @@ namespace servodrift::system
                              " end of the tables' angle/gap range (extend `Sweeps/Motor angles' or "
                              "`Sweeps/Gap fractions')");
     };
-    if (n_hi >= 0)
+    const double tolerance = 1e-13 * (hi - lo) + 1e-18;
+    if (n_hi >= 0 || n_lo <= 0)
       {
-        if (!hi_is_contact)
-          throw table_edge("upper");
-        op.angle = hi;
-        op.flapper = FlapperState::on_left_nozzle;
-      }
-    else if (n_lo <= 0)
-      {
-        if (!lo_is_contact)
-          throw table_edge("lower");
-        op.angle = lo;
-        op.flapper = FlapperState::on_right_nozzle;
+        // Pressed onto a nozzle: the flapper sinks into the contact until its stiffness holds the
+        // net torque (a few nm for RV-1's contact); the table must reach that far.
+        const bool left = n_hi >= 0;
+        if (!(left ? hi_is_contact : lo_is_contact))
+          throw table_edge(left ? "upper" : "lower");
+        double a = left ? hi : lo, b = a;
+        const auto [g_a, g_b] = bracket_falling(net_torque, a, b, 1e-9 * (hi - lo), "nozzle contact (E29)");
+        if (a < angle_lo || b > angle_hi)
+          throw table_edge(left ? "upper" : "lower");
+        op.angle = find_root(net_torque, a, b, g_a, g_b, tolerance, "nozzle contact (E29)");
+        op.flapper = left ? FlapperState::on_left_nozzle : FlapperState::on_right_nozzle;
       }
     else
       {
-        op.angle = find_root(net_torque, lo, hi, n_lo, n_hi, 1e-13 * (hi - lo) + 1e-18, "torque balance (E29)");
+        op.angle = find_root(net_torque, lo, hi, n_lo, n_hi, tolerance, "torque balance (E29)");
         op.flapper = FlapperState::free;
       }
-    op.flapper_displacement = r * op.angle - o.hydraulic_null;
-    op.bridge = bridge(T, op.flapper_displacement);
-    op.spool = spool(T, op.control_pressure_difference());
+    op.flapper_displacement = eq.flapper_displacement(op.angle);
+    op.bridge = bridge(eq, op.flapper_displacement);
+    op.spool = spool(eq, op.control_pressure_difference());
     return op;
   }
 
   double ValveModel::nulling_hydraulic_null(const Offsets &o) const
   {
-    // With the flapper centred the two jets balance, so the armature obeys the motor and the spring
-    // tube alone: T_em(T0, theta - theta_m, 0) = K_a (theta - theta_s). x_n = r theta centres it.
+    // With the flapper centred (x_n = r theta) the two jets balance, so E29 at rest holds the motor
+    // against the spring tube alone: T_em(T0, theta - theta_m, 0) = K_a (theta - theta_s).
     const double T0 = valve.operating.reference_temperature;
-    const double K_a = f.stiffness(T0);
+    const double r = valve.armature.pivot_to_nozzle_distance, p_r = valve.operating.return_pressure;
     const auto balance = [&](double theta) {
-      return f.torque(T0, theta - o.magnetic_null, 0.0) - K_a * (theta - o.spring_tube_rest_angle);
+      const ValveEquations eq = equations(T0, {o.spring_tube_rest_angle, o.magnetic_null, r * theta});
+      return eq.net_torque(theta, 0.0, p_r, p_r, 0.0);
     };
     const auto &angles = f.torque.axis(1);
     const double lo = o.magnetic_null + angles.front(), hi = o.magnetic_null + angles.back();
@@ -193,13 +243,13 @@ namespace servodrift::system
   std::optional<double> ValveModel::null_shift_current(double T, const Offsets &o) const
   {
     // Flapper centred (x_f = 0, p_L = p_R): theta = x_n/r and the jets balance.
-    const double theta = o.hydraulic_null / r;
+    const ValveEquations eq = equations(T, o);
+    const double theta = eq.angle_of(0.0), p_r = eq.return_pressure();
     const double a = theta - o.magnetic_null;
     const auto &angles = f.torque.axis(1);
     if (a < angles.front() || a > angles.back())
       return std::nullopt;
-    const double K_a = f.stiffness(T);
-    const auto balance = [&](double i) { return f.torque(T, a, i) - K_a * (theta - o.spring_tube_rest_angle); };
+    const auto balance = [&](double i) { return eq.net_torque(theta, 0.0, p_r, p_r, i); };
     const auto &currents = f.torque.axis(2);
     const double b_lo = balance(currents.front()), b_hi = balance(currents.back());
     if ((b_lo > 0) == (b_hi > 0) && b_lo != 0 && b_hi != 0)
@@ -211,6 +261,7 @@ namespace servodrift::system
   {
     const auto &base = valve.offsets;
     Offsets o{base.spring_tube_rest_angle, base.magnetic_null, base.hydraulic_null};
+    const double r = valve.armature.pivot_to_nozzle_distance;
     switch (base.deviation_target)
       {
         case OffsetParameters::Target::magnetic_null: o.magnetic_null += theta_d; break;

@@ -1,30 +1,25 @@
 #pragma once
-// The static whole-valve model (model.md 1.12-1.19), driven only by the coefficient tables.
+// The static whole-valve model (model.md 1.12-1.19): the equations of valve_equations.h at zero
+// rates, driven only by the coefficient tables.
 //
-// In steady state with the brake port blocked no oil flows into the control cavities or the brake
-// volume, so the equations form a cascade of scalar, monotone problems, each solved exactly on a
-// bracket (TOMS 748) rather than by a coupled Newton iteration that could leave the physical range:
-//   1. bridge (E31 = E32): for a flapper position, each control pressure from its half-bridge;
-//   2. torque balance (E29 static, offsets E39, D8): one equation in the armature angle, bracketed
-//      by the two nozzle contacts; no sign change means the flapper rests on a nozzle (saturation);
-//   3. spool (E35 static, E36): the force balance is piecewise linear in x_v (vented, in the lap,
-//      open to supply) and is solved in closed form; beyond the stroke the spool is on its stop.
+// At zero rates with the brake port blocked no oil flows into the control cavities or the brake
+// volume, so the equations form a cascade of scalar, monotone problems, each solved on a bracket
+// (TOMS 748) rather than by a coupled Newton iteration that could leave the physical range:
+//   1. bridge (E33 at rest, E31 = E32): for a flapper position, each control pressure;
+//   2. torque balance (E29 at rest, offsets E39, D8): one equation in the armature angle, bracketed
+//      by the two nozzle contacts; no sign change there means the flapper is pressed onto a nozzle
+//      (saturation), where it sinks into the contact's stiffness;
+//   3. spool (E35 at rest): the force balance in x_v, with the brake pressure of each x_v from the
+//      brake port's flow balance (E36, E37 at rest); past the stroke limits the stops hold it.
 #include "common/valve_description.h"
 #include "system/stage_tables.h"
+#include "system/valve_equations.h"
 
 #include <optional>
 #include <string>
 
 namespace servodrift::system
 {
-  /// Assembly offsets of E39: spring-tube rest angle, magnetic null, hydraulic null.
-  struct Offsets
-  {
-    double spring_tube_rest_angle = 0; ///< theta_s [rad]
-    double magnetic_null = 0;          ///< theta_m [rad]
-    double hydraulic_null = 0;         ///< x_n [m]
-  };
-
   enum class FlapperState
   {
     free,
@@ -33,11 +28,11 @@ namespace servodrift::system
   };
   enum class SpoolState
   {
-    on_negative_stop, ///< x_v = -stroke limit
-    vented,           ///< brake port open to return, p_B = p_r
+    on_negative_stop, ///< x_v at or past -stroke limit
+    vented,           ///< brake port open to return, p_B = p_r (plus the supply land's leakage)
     regulating,       ///< in the lap; p_B set by the lap-leakage divider and the force balance
-    at_supply,        ///< brake port open to supply, p_B = p_s
-    on_positive_stop  ///< x_v = +stroke limit
+    at_supply,        ///< brake port open to supply, p_B = p_s (minus the return land's leakage)
+    on_positive_stop  ///< x_v at or past +stroke limit
   };
   const char *to_string(FlapperState state);
   const char *to_string(SpoolState state);
@@ -66,6 +61,8 @@ namespace servodrift::system
     SpoolSolution spool;
     FlapperState flapper;
     double control_pressure_difference() const { return bridge.left_pressure - bridge.right_pressure; }
+    /// The state of model.md 1.20 at this point: every rate zero.
+    ValveState state() const;
   };
 
   class ValveModel
@@ -73,12 +70,18 @@ namespace servodrift::system
   public:
     ValveModel(const ValveDescription &valve, const StageTables &tables);
 
+    /// The valve's equations at T with these offsets: what every analysis evaluates.
+    ValveEquations equations(double temperature, const Offsets &offsets = {}) const;
+
     /// Bridge with the flapper at x_f (E31, E32) and the flapper forces (E23 / table) [blocked spool].
     BridgeState bridge(double temperature, double flapper_displacement) const;
+    BridgeState bridge(const ValveEquations &equations, double flapper_displacement) const;
     /// Static spool with blocked brake port for a control pressure difference p_L - p_R (E35, E36).
     SpoolSolution spool(double temperature, double control_pressure_difference) const;
+    SpoolSolution spool(const ValveEquations &equations, double control_pressure_difference) const;
     /// The static operating point (E29 static with E39 offsets).
     OperatingPoint solve(double temperature, double current, const Offsets &offsets) const;
+    OperatingPoint solve(const ValveEquations &equations, double current) const;
 
     /// Hydraulic null x_n that centres the flapper at T0 and i = 0 for the given theta_s, theta_m:
     /// the manufacturer's null adjustment (D8 "nulled at reference").
@@ -100,6 +103,5 @@ namespace servodrift::system
   private:
     ValveDescription valve;
     StageFunctions f;
-    double p_s, p_r, r;
   };
 } // namespace servodrift::system

@@ -20,6 +20,14 @@ namespace servodrift
     prm.declare_entry("Flapper width", "1.0e-3", Patterns::Double(0, 1),
                       "Flapper thickness between the two nozzles; enters the thermal change of the "
                       "null gap (2.3). [m]");
+    prm.declare_entry("Nozzle contact stiffness", "1e8", Patterns::Double(1e3, 1e13),
+                      "Stiffness K_c of the stop that a nozzle tip makes for the flapper (dynamics: the "
+                      "flapper on a nozzle is a contact, not a failure; the gap never goes negative). "
+                      "The static model uses it too, so a flapper pressed on a nozzle sinks in by "
+                      "force/K_c. [N/m]");
+    prm.declare_entry("Nozzle contact damping ratio", "0.7", Patterns::Double(0, 10),
+                      "Damping ratio of the nozzle contact: c_c = 2 zeta_c sqrt(K_c J_a/r^2), active "
+                      "only while in contact and never pulling (dynamics). [1]");
     prm.leave_subsection();
   }
 
@@ -30,6 +38,8 @@ namespace servodrift
     inertia = prm.get_double("Inertia");
     damping = prm.get_double("Damping");
     flapper_width = prm.get_double("Flapper width");
+    nozzle_contact_stiffness = prm.get_double("Nozzle contact stiffness");
+    nozzle_contact_damping_ratio = prm.get_double("Nozzle contact damping ratio");
     prm.leave_subsection();
   }
 } // namespace servodrift

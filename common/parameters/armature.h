@@ -11,6 +11,8 @@ namespace servodrift
     double inertia;                  ///< J_a [kg*m^2]
     double damping;                  ///< B_a [N*m*s/rad]
     double flapper_width;            ///< w_f at the nozzles [m]
+    double nozzle_contact_stiffness; ///< K_c of the flapper-nozzle contact, at the nozzle axis [N/m]
+    double nozzle_contact_damping_ratio; ///< zeta_c of the contact, c_c = 2 zeta_c sqrt(K_c J_a/r^2) [1]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(dealii::ParameterHandler &prm);

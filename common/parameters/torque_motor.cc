@@ -119,6 +119,14 @@ namespace servodrift
     prm.declare_entry("Coil resistance temperature coefficient", "3.93e-3", Patterns::Double(0, 0.1),
                       "alpha_Cu of the copper coils, R_c(T) = R_c (1 + alpha_Cu (T - 20)) (2.1; dynamics). "
                       "[1/degC]");
+    prm.declare_entry("Coil inductance", "0.041", Patterns::Double(0, 100),
+                      "Inductance of each coil, N_c^2/(2 R_g) = 0.041 H for RV-1 (2.1); voltage drive "
+                      "(dynamics). [H]");
+    prm.declare_entry("Coil drive", "current", Patterns::Selection("current|voltage"),
+                      "current: the amplifier imposes the control current i (default); voltage: it "
+                      "imposes u = R_c(T0) i_command and the coil current is a state, L di/dt = u - R(T) "
+                      "i - (dT_em/di) dtheta/dt, with one coil's R and L for push-pull and 2 R, 4 L for "
+                      "series-aiding (1.20; dynamics). [-]");
     prm.leave_subsection();
   }
 
@@ -169,6 +177,8 @@ namespace servodrift
     newton_tolerance = prm.get_double("Newton tolerance");
     coil_resistance = prm.get_double("Coil resistance");
     coil_resistance_temperature_coefficient = prm.get_double("Coil resistance temperature coefficient");
+    coil_inductance = prm.get_double("Coil inductance");
+    voltage_drive = prm.get("Coil drive") == "voltage";
     prm.leave_subsection();
   }
 } // namespace servodrift

@@ -58,6 +58,8 @@ namespace servodrift
     double newton_tolerance;             ///< residual reduction [1]
     double coil_resistance;         ///< per coil at 20 degC (voltage drive, 1.20) [Ohm]
     double coil_resistance_temperature_coefficient; ///< alpha_Cu [1/degC]
+    double coil_inductance;         ///< L_c per coil (voltage drive) [H]
+    bool voltage_drive;             ///< the amplifier imposes the coil voltage (coil state i) [-]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(dealii::ParameterHandler &prm);

@@ -23,8 +23,8 @@ namespace
   /// Control pressure of one half-bridge with the closed forms (E31 = E32).
   double bridge(const PilotClosedForms &pilot, double gap)
   {
-    return bridge_pressure([&](double dp) { return pilot.fixed_orifice(dp).flow_rate; },
-                           [&](double dp) { return pilot.nozzle(gap, dp).flow_rate; }, p_s, p_r);
+    return bridge_pressure(
+      [&](double p) { return pilot.fixed_orifice(p_s - p).flow_rate - pilot.nozzle(gap, p - p_r).flow_rate; }, p_s, p_r);
   }
 } // namespace
 

@@ -1,0 +1,101 @@
+#include "common/parameters/dynamics.h"
+
+#include "common/parameters/parameter_helpers.h"
+
+namespace servodrift
+{
+  using namespace parameters;
+
+  void DynamicsParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection);
+    prm.declare_entry("Enabled", "true", Patterns::Bool(),
+                      "Run the dynamics (modes, step and frequency responses) in `servodrift run'; "
+                      "`servodrift dynamics' runs them whatever this says. [-]");
+    prm.declare_entry("Bias", "0.5", Patterns::Double(-1, 1),
+                      "Bias current of the linearisation, the small step and the sine inputs, as a "
+                      "fraction of the rated current. At 0 RV-1's spool sits vented on its spring; from "
+                      "about 0.3 % of rated on it regulates in its lap, where the linearisation means "
+                      "something (issue 23). [1]");
+    prm.declare_entry("Small step", "0.05", Patterns::Double(1e-6, 1),
+                      "Height of the small step from the bias, as a fraction of the rated current. [1]");
+    prm.declare_entry("Step duration", "0", Patterns::Double(0, 100),
+                      "Simulated time of each step response; 0 chooses it from the slowest mode of the "
+                      "linearisation at the step's end point (12 time constants, at least 20 ms). [s]");
+    prm.declare_entry("Minimum frequency", "1", Patterns::Double(1e-3, 1e6),
+                      "Lowest frequency of the linear frequency response. [Hz]");
+    prm.declare_entry("Maximum frequency", "5000", Patterns::Double(1e-3, 1e6),
+                      "Highest frequency of the linear frequency response; above the minimum. [Hz]");
+    prm.declare_entry("Frequency points", "200", Patterns::Integer(2, 100000),
+                      "Points of the linear frequency response, log-spaced. [1]");
+    prm.declare_entry("Sine frequencies", "10, 20, 50, 100, 200, 300, 500, 700, 1000, 2000",
+                      double_list(1e-3, 1e6, 1),
+                      "Frequencies of the nonlinear sine responses, strictly increasing. [Hz]");
+    prm.declare_entry("Sine check amplitude", "0.01", Patterns::Double(1e-9, 1),
+                      "Largest amplitude of the small-signal sine that checks the linearisation, as a "
+                      "fraction of the rated current; at each frequency it is lowered until the linear "
+                      "excursions of spool and flapper stay within `Linearity margin' of their edges. "
+                      "[1]");
+    prm.declare_entry("Linearity margin", "0.1", Patterns::Double(1e-6, 1),
+                      "Largest linear excursion of the small-signal sine as a fraction of the distance "
+                      "from the bias to the nearest edge: the spool's lap edges (x_ov -+ x_v) and the "
+                      "nozzles (x0 -+ x_f). [1]");
+    prm.declare_entry("Sine amplitudes", "0.05, 0.25, 1", double_list(1e-9, 100, 1),
+                      "Amplitudes of the large-signal sine study around the bias, as fractions of the "
+                      "rated current, strictly increasing; bias +- amplitude must lie within `Sweeps/"
+                      "Motor currents'. One that drives the flapper onto a nozzle is allowed: the "
+                      "contact saturates it and the results say so. [1]");
+    prm.declare_entry("Samples per period", "64", Patterns::Integer(8, 100000),
+                      "Samples per period of a sine response from which its harmonics are computed. [1]");
+    prm.declare_entry("Maximum periods", "40", Patterns::Integer(2, 100000),
+                      "Periods a sine response may take to become periodic (its first harmonic changes "
+                      "by less than `Periodic tolerance' from one period to the next); a response that "
+                      "does not is reported as not periodic (a sub-harmonic or a slow drift). [1]");
+    prm.declare_entry("Periodic tolerance", "1e-4", Patterns::Double(1e-12, 1),
+                      "Largest change of the first harmonic from one period to the next, relative to "
+                      "its amplitude, of a periodic steady state. [1]");
+    prm.declare_entry("Relative tolerance", "1e-8", Patterns::Double(1e-14, 1e-2),
+                      "Relative local error tolerance of the time integration (CVODE, BDF). [1]");
+    prm.declare_entry("Absolute tolerance", "1e-10", Patterns::Double(1e-16, 1e-2),
+                      "Absolute local error tolerance of the time integration, as a fraction of each "
+                      "state's scale (x0/r, p_s - p_r, the stroke limit, the rated current). [1]");
+    prm.declare_entry("Maximum steps", "1000000", Patterns::Integer(100, 1000000000),
+                      "Most internal steps of the time integration between two outputs. [1]");
+    prm.declare_entry("Fixed-time study", "false", Patterns::Bool(),
+                      "model.md C9: integrate the start-up of the valve (supply switched on with every "
+                      "pressure at return, armature and spool centred) at each drift temperature, with "
+                      "and without the largest deviation angle, and read the drift measures at fixed "
+                      "times (`Reading times'), to test whether the paper read its dynamic model before "
+                      "the steady state. [-]");
+    prm.declare_entry("Reading times", "1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1",
+                      double_list(1e-9, 1e3, 1),
+                      "Times after start-up at which the fixed-time study reads the drift measures, "
+                      "strictly increasing. [s]");
+    prm.leave_subsection();
+  }
+
+  void DynamicsParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection);
+    enabled = prm.get_bool("Enabled");
+    bias = prm.get_double("Bias");
+    small_step = prm.get_double("Small step");
+    step_duration = prm.get_double("Step duration");
+    minimum_frequency = prm.get_double("Minimum frequency");
+    maximum_frequency = prm.get_double("Maximum frequency");
+    frequency_points = prm.get_integer("Frequency points");
+    sine_frequencies = get_double_list(prm, "Sine frequencies");
+    sine_check_amplitude = prm.get_double("Sine check amplitude");
+    linearity_margin = prm.get_double("Linearity margin");
+    sine_amplitudes = get_double_list(prm, "Sine amplitudes");
+    samples_per_period = prm.get_integer("Samples per period");
+    maximum_periods = prm.get_integer("Maximum periods");
+    periodic_tolerance = prm.get_double("Periodic tolerance");
+    relative_tolerance = prm.get_double("Relative tolerance");
+    absolute_tolerance = prm.get_double("Absolute tolerance");
+    maximum_steps = prm.get_integer("Maximum steps");
+    fixed_time_study = prm.get_bool("Fixed-time study");
+    reading_times = get_double_list(prm, "Reading times");
+    prm.leave_subsection();
+  }
+} // namespace servodrift
