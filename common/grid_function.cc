@@ -93,7 +93,10 @@ namespace servodrift
 
   double GridFunction::value(const double *x) const
   {
-    return interpolate(0, 0, x);
+    Segment segments[3];
+    for (unsigned int a = 0; a < axes.size(); ++a)
+      segments[a] = segment(a, x[a]);
+    return interpolate(0, 0, segments);
   }
 
   namespace
@@ -120,13 +123,10 @@ namespace servodrift
     }
   } // namespace
 
-  double GridFunction::interpolate(unsigned int a, std::size_t offset, const double *x) const
+  GridFunction::Segment GridFunction::segment(unsigned int a, double xq) const
   {
-    if (a == axes.size())
-      return values[offset];
     const std::vector<double> &g = axes[a];
     const std::size_t n = g.size();
-    double xq = x[a];
     const double tolerance = 1e-9 * (g.back() - g.front());
     if (!(xq >= g.front() - tolerance && xq <= g.back() + tolerance))
       throw TableRangeError(label + ": " + axis_names[a] + " = " + format_number(xq) +
@@ -135,13 +135,23 @@ namespace servodrift
     xq = std::clamp(xq, g.front(), g.back());
     std::size_t i = static_cast<std::size_t>(std::upper_bound(g.begin(), g.end(), xq) - g.begin());
     i = std::clamp<std::size_t>(i, 1, n - 1) - 1; // segment [g[i], g[i+1]]
+    return {xq, i, i > 0 ? i - 1 : i, std::min(i + 2, n - 1)};
+  }
+
+  double GridFunction::interpolate(unsigned int a, std::size_t offset, const Segment *segments) const
+  {
+    if (a == axes.size())
+      return values[offset];
+    const std::vector<double> &g = axes[a];
+    const std::size_t n = g.size();
+    const double xq = segments[a].x;
+    const std::size_t i = segments[a].i, first = segments[a].first, last = segments[a].last;
 
     // Values at the nodes i-1 .. i+2 that exist, interpolated along the remaining axes.
-    const std::size_t first = i > 0 ? i - 1 : i, last = std::min(i + 2, n - 1);
     double y[4] = {0, 0, 0, 0}, xs[4] = {0, 0, 0, 0};
     for (std::size_t j = first; j <= last; ++j)
       {
-        y[j - first] = interpolate(a + 1, offset + j * strides[a], x);
+        y[j - first] = interpolate(a + 1, offset + j * strides[a], segments);
         xs[j - first] = g[j];
       }
     const std::size_t li = i - first; // local index of g[i]

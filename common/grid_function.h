@@ -42,6 +42,14 @@ namespace servodrift
     std::vector<double> values;
     std::vector<std::size_t> strides;
 
-    double interpolate(unsigned int axis, std::size_t offset, const double *x) const;
+    /// Where a query falls on one axis: the clamped coordinate, its segment [g[i], g[i+1]] and the
+    /// nodes first..last of its PCHIP stencil. Found once per axis and query.
+    struct Segment
+    {
+      double x;
+      std::size_t i, first, last;
+    };
+    Segment segment(unsigned int axis, double x) const;
+    double interpolate(unsigned int axis, std::size_t offset, const Segment *segments) const;
   };
 } // namespace servodrift
