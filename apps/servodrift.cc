@@ -66,10 +66,12 @@ namespace
     say("  " + name + ": " + buffer);
   }
 
-  ValveDescription prepare(const Options &o)
+  ValveDescription prepare(const Options &o, bool dynamics)
   {
     say(producer_string("on " + std::to_string(mpi_size()) + (mpi_size() == 1 ? " rank" : " ranks")));
     ValveDescription valve = load(o);
+    if (dynamics) // `servodrift dynamics' runs them whatever `Dynamics/Enabled' says
+      validate_dynamics(valve);
     say("valve description: " + valve.source + ", output: " + valve.output.directory + "/");
     write_parameters_file(valve); // creates the output directory, or stops every rank with the reason
     return valve;
@@ -89,7 +91,9 @@ namespace
     auto *structure = app.add_subcommand("structure", "spring-tube stage alone: tables/spring_tube.csv");
     auto *flow = app.add_subcommand("flow", "pilot-stage flow alone: tables/fixed_orifice.csv, tables/nozzle_flapper.csv");
     auto *system = app.add_subcommand("system", "system model alone, from the tables already in <output>/tables");
-    for (auto *c : {run, magnetics, structure, flow, system})
+    auto *dynamics = app.add_subcommand(
+      "dynamics", "system model with the dynamics (modes, step and frequency responses), from the tables in <output>/tables");
+    for (auto *c : {run, magnetics, structure, flow, system, dynamics})
       add_common_options(c, o);
     magnetics->add_flag("--calibrate", o.calibrate,
                         "C10: calibrate the field model's equivalent magnet width at T0 against the circuit");
@@ -125,13 +129,15 @@ namespace
         return 0;
       }
 
-    const ValveDescription valve = prepare(o);
+    const ValveDescription valve = prepare(o, dynamics->parsed());
     if (run->parsed())
       {
         timed("magnetics (" + valve.torque_motor.model_level + ")", [&] { magnetics::run(valve); });
         timed("structure (" + valve.spring_tube.model_level + ")", [&] { structure::run(valve); });
         timed("flow (" + valve.pilot.model_level + ")", [&] { flow::run(valve); });
-        timed("system: fits, drift maps, plots, report", [&] { system::run(valve); });
+        const bool with_dynamics = valve.dynamics.enabled;
+        timed(std::string("system: fits, drift maps, ") + (with_dynamics ? "dynamics, " : "") + "plots, report",
+              [&] { system::run(valve, with_dynamics); });
         say("results: " + valve.output.directory + "/report.md, " + valve.output.directory + "/tables/, " +
             valve.output.directory + "/system/");
       }
@@ -154,9 +160,11 @@ namespace
         write_fits(valve);
         say("results: " + tables_directory(valve) + "/");
       }
-    else if (system->parsed())
+    else if (system->parsed() || dynamics->parsed())
       {
-        timed("system: fits, drift maps, plots, report", [&] { system::run(valve); });
+        const bool with_dynamics = dynamics->parsed();
+        timed(std::string("system: fits, drift maps, ") + (with_dynamics ? "dynamics, " : "") + "plots, report",
+              [&] { system::run(valve, with_dynamics); });
         say("results: " + valve.output.directory + "/report.md, " + valve.output.directory + "/system/");
       }
     return 0;

@@ -196,3 +196,29 @@ namespace servodrift
     return out;
   }
 } // namespace servodrift
+
+#include "common/sweep_objects.h"
+
+namespace servodrift::detail
+{
+  std::vector<double> pack_bytes(const std::string &bytes)
+  {
+    // [byte count, the bytes in 8-byte words]; memcpy keeps every bit pattern
+    std::vector<double> row(1 + (bytes.size() + 7) / 8, 0.0);
+    row[0] = static_cast<double>(bytes.size());
+    if (!bytes.empty())
+      std::memcpy(row.data() + 1, bytes.data(), bytes.size());
+    return row;
+  }
+
+  std::string unpack_bytes(const std::vector<double> &row)
+  {
+    const auto size = static_cast<std::size_t>(row.at(0));
+    if ((size + 7) / 8 + 1 != row.size())
+      throw std::logic_error("object_of: the row does not hold an archive");
+    std::string bytes(size, '\0');
+    if (size > 0)
+      std::memcpy(bytes.data(), row.data() + 1, size);
+    return bytes;
+  }
+} // namespace servodrift::detail

@@ -118,6 +118,17 @@ namespace servodrift::laws
     return g;
   }
 
+  double coil_resistance(const TorqueMotorParameters &m, double T)
+  {
+    const double coils = m.series_aiding ? 2.0 : 1.0;
+    return coils * m.coil_resistance * (1 + m.coil_resistance_temperature_coefficient * (T - 20.0));
+  }
+
+  double coil_inductance(const TorqueMotorParameters &m)
+  {
+    return (m.series_aiding ? 4.0 : 1.0) * m.coil_inductance;
+  }
+
   SpoolGeometry spool_geometry(const SpoolParameters &s, const ThermalExpansion &alpha, double T, double T0)
   {
     const double d_v = expanded(s.control_diameter, alpha.spool, T, T0);

@@ -82,6 +82,12 @@ namespace servodrift::laws
   /// B_r(T) = B_r0 [1 + alpha_Br (T - T0)] (1 - R_irr) (E8) [T].
   double remanence(const TorqueMotorParameters &motor, double T, double T0);
 
+  /// Resistance of the circuit that carries the control current i: one coil (push-pull, D7) or both
+  /// in series (series-aiding), R_c(T) = R_c (1 + alpha_Cu (T - 20 degC)) per coil (2.1) [Ohm].
+  double coil_resistance(const TorqueMotorParameters &motor, double T);
+  /// Its inductance: one coil's L_c, or 4 L_c for two tightly coupled coils in series (2.1) [H].
+  double coil_inductance(const TorqueMotorParameters &motor);
+
   /// Pilot-stage dimensions at T (2.3). The null gap changes with the mismatch of body, nozzles and
   /// flapper: x0(T) = x0 + (alpha_body S - 2 alpha_nozzle L_n - alpha_flapper w_f)(T - T0)/2.
   struct PilotStageGeometry

@@ -382,6 +382,61 @@ namespace servodrift
     }
   } // namespace
 
+  void validate_dynamics(const ValveDescription &v)
+  {
+    const auto &d = v.dynamics;
+    const auto &op = v.operating;
+    const auto &sw = v.sweeps;
+    if (!(d.minimum_frequency < d.maximum_frequency))
+      refuse("Dynamics/Minimum frequency", "= " + format_number(d.minimum_frequency) +
+                                             " Hz must be below `Dynamics/Maximum frequency' = " +
+                                             format_number(d.maximum_frequency) + " Hz");
+    require_increasing(d.sine_frequencies, "Dynamics/Sine frequencies");
+    require_increasing(d.sine_amplitudes, "Dynamics/Sine amplitudes");
+    require_increasing(d.reading_times, "Dynamics/Reading times");
+    const auto &tm = v.torque_motor;
+    if (tm.voltage_drive && !(tm.coil_resistance > 0 && tm.coil_inductance > 0))
+      refuse("Torque motor/Coil inductance", "and `Torque motor/Coil resistance' must be > 0 under voltage drive "
+                                             "(`Torque motor/Coil drive' = voltage)");
+
+    // Every current the analyses command must lie in the torque table: bias -+ the largest sine
+    // amplitude, the small step, 0 and the rated current. Under voltage drive the coil current is a
+    // state: a cold coil draws R_c(T0)/R_c(T) of the command, and near the armature's resonance the
+    // back-EMF lets it overshoot by some 10 %, so the table must reach 1.25 times that.
+    double ratio = 1;
+    if (tm.voltage_drive)
+      {
+        for (double T : sw.drift_temperatures)
+          ratio = std::max(ratio, laws::coil_resistance(tm, op.reference_temperature) / laws::coil_resistance(tm, T));
+        ratio *= 1.25;
+      }
+    const double rated = op.rated_current, bias = d.bias * rated;
+    const double amplitude = std::max(d.sine_amplitudes.back(), d.sine_check_amplitude) * rated;
+    const double lowest = std::min({0.0, bias - amplitude}) * ratio;
+    const double highest = std::max({rated, bias + amplitude, bias + d.small_step * rated}) * ratio;
+    const auto &currents = sw.motor_currents;
+    if (lowest < currents.front() || highest > currents.back())
+      refuse("Dynamics/Sine amplitudes",
+             "with `Dynamics/Bias' = " + format_number(d.bias) + " command currents from " + format_number(lowest) +
+               " to " + format_number(highest) + " A" +
+               (tm.voltage_drive ? " (under voltage drive: a cold coil's current with 25 % for its overshoot)" : "") +
+               ", beyond the torque table's `Sweeps/Motor currents' [" + format_number(currents.front()) + ", " +
+               format_number(currents.back()) + "] A; lower the amplitudes or the bias, or extend the currents");
+    // The flapper may reach a nozzle in a transient (it saturates there): the torque table must
+    // reach the nozzle contacts, theta = (+-x0(T) + x_n)/r.
+    double contact = 0;
+    for (double T : sw.table_temperatures)
+      {
+        const auto g = laws::pilot_stage_geometry(v.pilot, v.armature, v.expansion, T, op.reference_temperature);
+        contact = std::max(contact, (g.null_gap + std::abs(v.offsets.hydraulic_null)) / v.armature.pivot_to_nozzle_distance +
+                                      std::abs(v.offsets.magnetic_null));
+      }
+    if (-sw.motor_angles.front() < contact || sw.motor_angles.back() < contact)
+      refuse("Sweeps/Motor angles", "must reach the nozzle contacts at +-" + format_number(1.001 * contact / units::degree) +
+                                      " deg for the dynamics, where the flapper may hit a nozzle in a transient "
+                                      "(or set `Dynamics/Enabled' = false)");
+  }
+
   void validate(const ValveDescription &v)
   {
     const auto &op = v.operating;
@@ -591,6 +646,37 @@ namespace servodrift
     if (!(sp.stroke_limit > sp.overlap))
       refuse("Spool/Stroke limit", "= " + format_number(sp.stroke_limit) + " m must exceed the overlap " +
                                      format_number(sp.overlap) + " m");
+
+    // Parts of the dynamic model that the static model uses as well (E36 leakage) or that must be
+    // physical whatever runs
+    if (!(sp.radial_clearance > 0))
+      refuse("Spool/Radial clearance", "= " + format_number(sp.radial_clearance) +
+                                         " m must be > 0: the lap leakage sets the blocked brake port's pressure (E36)");
+    if (!(v.armature.inertia > 0))
+      refuse("Armature/Inertia", "= " + format_number(v.armature.inertia) + " kg*m^2 must be > 0 (E29)");
+    if (!(sp.mass > 0))
+      refuse("Spool/Mass", "= " + format_number(sp.mass) + " kg must be > 0 (E35)");
+    if (!(sp.brake_volume > 0))
+      refuse("Spool/Brake volume", "= " + format_number(sp.brake_volume) + " m^3 must be > 0 (E37)");
+    if (!(sp.port_volume > 0))
+      refuse("Spool/Port volume", "= " + format_number(sp.port_volume) + " m^3 must be > 0 (E37)");
+    {
+      const double swept = 0.25 * units::pi * sp.control_diameter * sp.control_diameter * sp.stroke_limit;
+      if (!(ps.control_cavity_volume > swept))
+        refuse("Pilot stage/Control cavity volume",
+               "= " + format_number(ps.control_cavity_volume) + " m^3 must exceed the volume the spool end sweeps over "
+                 "its stroke, A_v x stroke = " + format_number(swept) + " m^3 (E33: V_0 -+ A_v x_v > 0)");
+    }
+    if (!(fl.bulk_modulus > 0))
+      refuse("Fluid/Bulk modulus", "= " + format_number(fl.bulk_modulus) + " Pa must be > 0 (2.8)");
+    for (double T : sw.drift_temperatures)
+      if (!(1 - fl.bulk_modulus_temperature_coefficient * (T - op.reference_temperature) > 0))
+        refuse("Fluid/Bulk modulus temperature coefficient",
+               "= " + format_number(fl.bulk_modulus_temperature_coefficient) + " 1/degC makes beta_e <= 0 at " +
+                 format_number(T) + " degC (2.8); it must stay below " +
+                 format_number(1 / (T - op.reference_temperature)) + " 1/degC");
+    if (v.dynamics.enabled)
+      validate_dynamics(v);
 
     // Offsets (C8): re-nulling with the hydraulic null removes a hydraulic-null deviation exactly
     if (v.offsets.deviation_target == OffsetParameters::Target::hydraulic_null &&

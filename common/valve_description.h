@@ -64,4 +64,7 @@ namespace servodrift
   /// Checks that go beyond one entry's range (p_r < p_s, d < D, x0 <= D_N/4, positive torque-motor
   /// gaps at every temperature, temperatures inside the oil law's window, ...). Throws InputError.
   void validate(const ValveDescription &valve);
+  /// The checks of the dynamics' parameters (frequencies, amplitudes within the torque table, the
+  /// table reaching the nozzle contacts); validate() runs them when `Dynamics/Enabled'.
+  void validate_dynamics(const ValveDescription &valve);
 } // namespace servodrift

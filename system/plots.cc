@@ -12,17 +12,6 @@ namespace servodrift::system
 {
   namespace
   {
-    /// Up to five deviation-angle indices: both ends, zero and halfway, for the line plots.
-    std::vector<std::size_t> line_angles(const std::vector<double> &angles)
-    {
-      std::vector<std::size_t> out;
-      const std::size_t n = angles.size();
-      for (std::size_t k : {std::size_t(0), n / 4, n / 2, (3 * n) / 4, n - 1})
-        if (k < n && (out.empty() || out.back() != k))
-          out.push_back(k);
-      return out;
-    }
-
     std::string data_files(const SystemResults &r, const std::string &dir, const ValveDescription &valve)
     {
       const auto &m = r.drift_map;
@@ -50,7 +39,7 @@ namespace servodrift::system
       lines << "# blocks by deviation angle; temperature[degC] spool_displacement_deviation[um] "
                "brake_pressure_deviation[kPa] null_shift_current_of_rated[%] own_drift_removed[kPa]\n";
       std::string titles;
-      for (std::size_t a : line_angles(m.deviation_angles))
+      for (std::size_t a : representative_indices(m.deviation_angles.size()))
         {
           const std::string title = format_cell(m.deviation_angles[a] / units::degree) + " deg";
           titles += (titles.empty() ? "" : " ") + std::string("'") + title + "'";
@@ -82,11 +71,6 @@ namespace servodrift::system
       write_file_atomically(dir + "/stage_coefficients.dat", coefficients.str());
       return titles;
     }
-
-    struct Plot
-    {
-      std::string name, body;
-    };
 
     std::vector<Plot> plot_bodies(const std::string &titles, const DriftMap &m)
     {
@@ -123,21 +107,23 @@ namespace servodrift::system
     }
   } // namespace
 
-  PlotFiles write_plots(const ValveDescription &valve, const SystemResults &results, const std::string &dir)
+  std::vector<std::size_t> representative_indices(std::size_t n)
   {
-    PlotFiles files;
-    if (!valve.output.plots)
-      {
-        files.problem = "plots switched off (`Output/Plots')";
-        return files;
-      }
-    prepare_output_directory(dir);
-    const std::string titles = data_files(results, dir, valve);
+    std::vector<std::size_t> out;
+    for (std::size_t k : {std::size_t(0), n / 4, n / 2, (3 * n) / 4, n - 1})
+      if (k < n && (out.empty() || out.back() != k))
+        out.push_back(k);
+    return out;
+  }
+
+  void render_plots(const ValveDescription &valve, const std::vector<Plot> &plots, const std::string &dir,
+                    PlotFiles &files)
+  {
     const bool have_gnuplot = std::system("gnuplot --version > /dev/null 2>&1") == 0;
     if (!have_gnuplot)
       files.problem = "gnuplot was not found: the .dat data and .gp scripts are in system/plots/ (run `gnuplot "
                       "<name>.gp' there)";
-    for (const auto &plot : plot_bodies(titles, results.drift_map))
+    for (const auto &plot : plots)
       for (const auto &format : valve.output.plot_formats)
         {
           const std::string terminal = format == "png" ? "pngcairo size 960,680 font 'sans,10'" : "svg size 960,680 dynamic";
@@ -157,6 +143,19 @@ namespace servodrift::system
               files.problem = "gnuplot failed on system/plots/" + plot.name + "." + format + ".gp";
             }
         }
+  }
+
+  PlotFiles write_plots(const ValveDescription &valve, const SystemResults &results, const std::string &dir)
+  {
+    PlotFiles files;
+    if (!valve.output.plots)
+      {
+        files.problem = "plots switched off (`Output/Plots')";
+        return files;
+      }
+    prepare_output_directory(dir);
+    const std::string titles = data_files(results, dir, valve);
+    render_plots(valve, plot_bodies(titles, results.drift_map), dir, files);
     return files;
   }
 } // namespace servodrift::system

@@ -17,4 +17,17 @@ namespace servodrift::system
   };
 
   PlotFiles write_plots(const ValveDescription &valve, const SystemResults &results, const std::string &directory);
+
+  /// A gnuplot plot: the commands after the terminal and output lines.
+  struct Plot
+  {
+    std::string name, body;
+  };
+  /// Writes <name>.<format>.gp for every plot and `Output/Plot formats' into `directory' and renders
+  /// it with gnuplot where gnuplot is installed; adds the images (relative to the output directory)
+  /// and any problem to `files'.
+  void render_plots(const ValveDescription &valve, const std::vector<Plot> &plots, const std::string &directory,
+                    PlotFiles &files);
+  /// Up to five indices of a list of n: both ends, the middle and the quartiles.
+  std::vector<std::size_t> representative_indices(std::size_t n);
 } // namespace servodrift::system

@@ -3,6 +3,7 @@
 #include "common/output_files.h"
 #include "common/units.h"
 #include "common/version.h"
+#include "system/dynamics_report.h"
 #include "system/system_stage.h"
 
 #include <cmath>
@@ -13,15 +14,20 @@
 
 namespace servodrift::system
 {
+  std::string report_number(double v, int digits)
+  {
+    if (!std::isfinite(v))
+      return "n/a";
+    char b[48];
+    std::snprintf(b, sizeof(b), "%.*g", digits, v);
+    return b;
+  }
+
   namespace
   {
     std::string fmt(double v, int digits = 4)
     {
-      if (!std::isfinite(v))
-        return "n/a";
-      char b[48];
-      std::snprintf(b, sizeof(b), "%.*g", digits, v);
-      return b;
+      return report_number(v, digits);
     }
 
     std::string percent(double value, double reference)
@@ -258,6 +264,11 @@ namespace servodrift::system
     drift_section(out, valve, r.drift_map);
     out << "Every point: `system/drift_map.csv`.\n\n";
 
+    if (r.dynamics)
+      dynamics_section(out, valve, *r.dynamics);
+    else
+      out << "## Dynamics\n\nNot computed in this run (`Dynamics/Enabled`, or `servodrift dynamics`).\n\n";
+
     out << "## Plots\n\n";
     for (const auto &image : plots.images)
       if (image.size() > 4 && image.substr(image.size() - 4) == ".png")
@@ -269,6 +280,10 @@ namespace servodrift::system
         << "- `parameters.prm`: the valve description as used\n"
         << "- `tables/*.csv`: coefficient tables; `tables/fits.json`: fits\n"
         << "- `system/stage_coefficients.csv`, `system/operating_points.csv`, `system/drift_map.csv`\n"
+        << (r.dynamics ? "- `system/modes.csv`, `system/frequency_response.csv`, `system/step_response.csv`, "
+                         "`system/step_metrics.csv`, `system/sine_response.csv`, `system/dynamics_summary.csv`" +
+                           std::string(r.dynamics->fixed_time ? ", `system/fixed_time_study.csv`" : "") + "\n" :
+                         "")
         << "- `system/plots/`: images, their data (`.dat`) and gnuplot scripts (`.gp`)\n";
     write_file_atomically(path, out.str());
   }

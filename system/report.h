@@ -9,6 +9,9 @@
 namespace servodrift::system
 {
   struct SystemResults;
+
+  /// A number for report.md: `digits' significant digits, "n/a" if not finite.
+  std::string report_number(double value, int digits = 4);
   void write_report(const ValveDescription &valve, const SystemResults &results, const PlotFiles &plots,
                     const std::string &path);
 } // namespace servodrift::system

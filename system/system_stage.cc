@@ -7,6 +7,8 @@
 #include "common/sweep.h"
 #include "common/units.h"
 #include "common/version.h"
+#include "system/dynamics_output.h"
+#include "system/dynamics_plots.h"
 #include "system/plots.h"
 #include "system/report.h"
 
@@ -14,7 +16,7 @@
 
 namespace servodrift::system
 {
-  SystemResults compute(const ValveDescription &valve, const std::string &tables_directory)
+  SystemResults compute(const ValveDescription &valve, const std::string &tables_directory, bool with_dynamics)
   {
     const StageTables tables = StageTables::read(tables_directory, valve);
     const ValveModel model(valve, tables);
@@ -25,6 +27,8 @@ namespace servodrift::system
     for (double T : valve.sweeps.drift_temperatures)
       results.coefficients.push_back(stage_coefficients(model, T));
     results.drift_map = compute_drift_map(model, valve.output.progress);
+    if (with_dynamics)
+      results.dynamics = compute_dynamics(model, valve.output.progress);
 
     // E28: dF_f = K_f(T) x_f with K_f(T) = c1 T^4 + c2 T^3 + c3 T^2 + c4 T + c5
     std::vector<std::vector<double>> T;
@@ -139,9 +143,9 @@ namespace servodrift::system
     }
   } // namespace
 
-  void run(const ValveDescription &valve)
+  void run(const ValveDescription &valve, bool with_dynamics)
   {
-    const SystemResults results = compute(valve, tables_directory(valve));
+    const SystemResults results = compute(valve, tables_directory(valve), with_dynamics);
     write_fits(valve, {results.flow_force_fit});
     on_rank_zero([&] {
       for (const auto &w : results.warnings)
@@ -151,7 +155,11 @@ namespace servodrift::system
       write_stage_coefficients(valve, results, dir);
       write_operating_points(valve, results, dir);
       write_drift_map(valve, results, dir);
-      const auto plots = write_plots(valve, results, dir + "/plots");
+      if (results.dynamics)
+        write_dynamics_tables(valve, *results.dynamics, dir);
+      auto plots = write_plots(valve, results, dir + "/plots");
+      if (results.dynamics)
+        write_dynamics_plots(valve, *results.dynamics, dir + "/plots", plots);
       write_report(valve, results, plots, valve.output.directory + "/report.md");
     });
   }

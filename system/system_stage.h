@@ -4,8 +4,10 @@
 #include "common/fitting.h"
 #include "common/valve_description.h"
 #include "system/drift_map.h"
+#include "system/dynamics.h"
 #include "system/stage_coefficients.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,12 +20,14 @@ namespace servodrift::system
     PolynomialFit flow_force_fit;                ///< E28: K_f(T), quartic in T
     std::vector<std::string> warnings;
     std::vector<std::string> table_producers;    ///< producer line of each table (tells the model level)
+    std::optional<DynamicsResults> dynamics;     ///< when asked for (issue 23)
   };
 
-  /// Everything, from the tables in `tables_directory', without writing anything.
-  SystemResults compute(const ValveDescription &valve, const std::string &tables_directory);
+  /// Everything, from the tables in `tables_directory', without writing anything; the dynamics
+  /// too if `with_dynamics'.
+  SystemResults compute(const ValveDescription &valve, const std::string &tables_directory, bool with_dynamics = false);
 
   /// compute() on <output>/tables, then writes system/*.csv, tables/fits.json (with E28), the
   /// plots and report.md (rank 0).
-  void run(const ValveDescription &valve);
+  void run(const ValveDescription &valve, bool with_dynamics);
 } // namespace servodrift::system

@@ -58,10 +58,8 @@ namespace servodrift::system
     minimum_leak_length = s.minimum_leak_length;
     transition_number = s.laminar_transition_number;
 
-    // the circuit that carries i: one coil (push-pull) or both in series (R x 2, L x 4, model.md 2.1)
-    const double coils = tm.series_aiding ? 2.0 : 1.0;
-    coil_resistance = coils * tm.coil_resistance * (1 + tm.coil_resistance_temperature_coefficient * (T - 20.0));
-    L_c = coils * coils * tm.coil_inductance;
+    coil_resistance = laws::coil_resistance(tm, T);
+    L_c = laws::coil_inductance(tm);
   }
 
   // --- armature and flapper --------------------------------------------------------------------
@@ -119,12 +117,12 @@ namespace servodrift::system
 
   // The tables give Q/sqrt(dp), which tends to 0 in the laminar limit dp -> 0, so Q = c(dp) sqrt(dp)
   // is a signed square root with a laminar region (E20) of the table's own making. Beyond the
-  // tabulated pressure range (only in a transient) C_d is held at its last value.
+  // tabulated pressure range (only in a transient) C_d is held at its last value, and flagged.
   double ValveEquations::orifice_flow(double dp) const
   {
     const double a = std::abs(dp);
     if (a > orifice_dp_max)
-      flow_table_exceeded = true;
+      table_exceeded = true;
     return std::copysign(f.orifice_conductance(T, std::min(a, orifice_dp_max)) * std::sqrt(a), dp); // E31
   }
 
@@ -132,7 +130,7 @@ namespace servodrift::system
   {
     const double a = std::abs(dp);
     if (a > nozzle_dp_max)
-      flow_table_exceeded = true;
+      table_exceeded = true;
     const double h = std::clamp(gap, 0.0, gap_max);
     return std::copysign(f.nozzle_conductance(T, h, std::min(a, nozzle_dp_max)) * std::sqrt(a), dp); // E32
   }
@@ -155,8 +153,13 @@ namespace servodrift::system
   std::array<double, 2> ValveEquations::edge(double opening, double dp) const
   {
     // Laminar leakage across the land, pi d_v c_r^3 dp/(12 mu L), over the leak length L = -opening
-    // while overlapped, floored so that it stays finite at and past the edge (E36, C14)
-    double flow = leak_coefficient / std::max(-opening, minimum_leak_length) * dp;
+    // while overlapped, floored so that it stays finite at and past the edge (E36, C14). The floor
+    // is a smooth maximum, L_min + L_min ln(1 + exp((L - L_min)/L_min)): a corner there would cost the
+    // time integration a step failure at every crossing of the lap edge.
+    const double excess = (-opening - minimum_leak_length) / minimum_leak_length;
+    const double leak_length =
+      minimum_leak_length * (1 + (excess > 30 ? excess : std::log1p(std::exp(excess))));
+    double flow = leak_coefficient / leak_length * dp;
     double force = 0;
     if (opening > 0)
       {

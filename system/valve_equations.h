@@ -114,8 +114,8 @@ namespace servodrift::system
     {
       return voltage_drive_ ? state.coil_current : input.current;
     }
-    /// The voltage that makes `current' flow at steady state: R_c(T) i [V]
-    double steady_voltage(double current) const { return coil_resistance * current; }
+    /// The current that a voltage drives at steady state: u/R_c(T) [A]
+    double steady_current_of_voltage(double voltage) const { return voltage / coil_resistance; }
 
     // --- values at this temperature that the analyses need -------------------------------------
     double temperature() const { return T; }
@@ -138,8 +138,10 @@ namespace servodrift::system
     double armature_damping() const { return B_a; }                  ///< [N*m*s/rad]
     double spool_mass() const { return m_v; }                        ///< [kg]
     double coil_inductance() const { return L_c; }                   ///< [H]
+    const std::vector<double> &table_currents() const { return f.torque.axis(2); } ///< [A]
     /// true once a query went beyond the flow tables' pressure range (constant C_d beyond)
-    bool left_flow_tables() const { return flow_table_exceeded; }
+    bool left_tables() const { return table_exceeded; }
+    void forget_table_excursions() const { table_exceeded = false; }
 
   private:
     const StageFunctions &f;
@@ -153,7 +155,7 @@ namespace servodrift::system
     double stop_stiffness, stop_damping, leak_coefficient, minimum_leak_length, transition_number;
     double rho, nu;
     double coil_resistance, L_c;
-    mutable bool flow_table_exceeded = false;
+    mutable bool table_exceeded = false;
 
     /// One metering edge of opening `opening' (> 0 open) and pressure difference dp across it.
     std::array<double, 2> edge(double opening, double pressure_difference) const;

@@ -48,15 +48,17 @@ namespace servodrift
     prm.declare_entry("Samples per period", "64", Patterns::Integer(8, 100000),
                       "Samples per period of a sine response from which its harmonics are computed. [1]");
     prm.declare_entry("Maximum periods", "40", Patterns::Integer(2, 100000),
-                      "Periods a sine response may take to become periodic (its first harmonic changes "
-                      "by less than `Periodic tolerance' from one period to the next); a response that "
-                      "does not is reported as not periodic (a sub-harmonic or a slow drift). [1]");
-    prm.declare_entry("Periodic tolerance", "1e-4", Patterns::Double(1e-12, 1),
-                      "Largest change of the first harmonic from one period to the next, relative to "
-                      "its amplitude, of a periodic steady state. [1]");
-    prm.declare_entry("Relative tolerance", "1e-8", Patterns::Double(1e-14, 1e-2),
-                      "Relative local error tolerance of the time integration (CVODE, BDF). [1]");
-    prm.declare_entry("Absolute tolerance", "1e-10", Patterns::Double(1e-16, 1e-2),
+                      "Periods a sine response may take to become periodic (its state recurs after one "
+                      "period, or after m <= 32 periods for a sub-harmonic, within `Periodic tolerance'); "
+                      "one that does not is reported as not periodic. [1]");
+    prm.declare_entry("Periodic tolerance", "1e-3", Patterns::Double(1e-12, 1),
+                      "Largest change of the state over one period (or m periods), in each state's scale, "
+                      "relative to the motion of the outputs, of a periodic steady state; it bounds the "
+                      "error of the harmonics to about as much. [1]");
+    prm.declare_entry("Relative tolerance", "1e-6", Patterns::Double(1e-14, 1e-2),
+                      "Relative local error tolerance of the time integration (CVODE, BDF), applied to "
+                      "the motion about the operating point each analysis starts from. [1]");
+    prm.declare_entry("Absolute tolerance", "1e-8", Patterns::Double(1e-16, 1e-2),
                       "Absolute local error tolerance of the time integration, as a fraction of each "
                       "state's scale (x0/r, p_s - p_r, the stroke limit, the rated current). [1]");
     prm.declare_entry("Maximum steps", "1000000", Patterns::Integer(100, 1000000000),

@@ -15,17 +15,19 @@ namespace servodrift
                       "Temperatures at which every stage writes its coefficient table (D3); strictly "
                       "increasing, inside the fluid's viscosity-law window. [degC]");
     prm.declare_entry("Motor angles",
-                      "-0.2, -0.15, -0.1, -0.05, 0, 0.05, 0.1, 0.15, 0.2",
+                      "-0.25, -0.15, -0.1, -0.05, 0, 0.05, 0.1, 0.15, 0.25",
                       double_list(-10, 10, 2),
                       "Armature angles of the torque_motor table, strictly increasing; they must cover "
                       "the armature angles of the drift map's operating points (a query beyond them "
-                      "stops the system model, naming this entry) and include +-0.1 deg for the secant "
-                      "K_m (C1). [deg]");
+                      "stops the system model, naming this entry), include +-0.1 deg for the secant "
+                      "K_m (C1) and, for the dynamics, reach the nozzle contacts (+-0.23 deg for RV-1). "
+                      "[deg]");
     prm.declare_entry("Motor currents",
-                      "-0.02, -0.01, 0, 0.01, 0.02",
+                      "-0.03, -0.02, -0.01, 0, 0.01, 0.02, 0.03",
                       double_list(-10, 10, 2),
                       "Differential coil currents of the torque_motor table, strictly increasing; must "
-                      "include 0 and the rated current. [A]");
+                      "include 0 and the rated current, and cover the dynamics' inputs (bias -+ the "
+                      "largest sine amplitude: -10..30 mA for RV-1). [A]");
     prm.declare_entry("Pressure fractions",
                       "0, 0.0025, 0.01, 0.025, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1",
                       double_list(0, 1, 2),

@@ -3,7 +3,8 @@
 # usage: mpi_identical.sh servodrift mpirun [whole-chain|flow-field]
 #   whole-chain (default): `servodrift run' with the field-level torque motor on a coarse mesh and the
 #     reduced-order pilot stage (the field-level flow is the other case), two temperatures; its four
-#     tables, the fits and the drift maps.
+#     tables, the fits, the drift maps and the dynamics (a temperature's linear analyses and steps,
+#     and each temperature and sine frequency, are cases shared over the ranks).
 #   flow-field: `servodrift flow' at the field level. One rank computes the fixed orifice's first
 #     cases over temperature (one path, hottest first) beside the nozzle chains and hands their fields
 #     to the others; the orifice chains that go on from them are shared over the ranks
@@ -21,9 +22,13 @@ case "$which" in
           --set "Pilot stage/Model level=reduced-order"
           --set "Sweeps/Table temperatures=40, 120" --set "Sweeps/Drift temperatures=40, 80, 120"
           --set "Sweeps/Motor currents=-0.02, 0, 0.02"
-          --set "Sweeps/Deviation angles=-0.05, -0.02, 0, 0.02, 0.05")
+          --set "Sweeps/Deviation angles=-0.05, -0.02, 0, 0.02, 0.05"
+          --set "Dynamics/Sine frequencies=20, 200" --set "Dynamics/Sine amplitudes=0.05, 0.5"
+          --set "Dynamics/Frequency points=40")
     files=(tables/torque_motor.csv tables/spring_tube.csv tables/fixed_orifice.csv tables/nozzle_flapper.csv
-           tables/fits.json system/drift_map.csv system/stage_coefficients.csv system/operating_points.csv) ;;
+           tables/fits.json system/drift_map.csv system/stage_coefficients.csv system/operating_points.csv
+           system/modes.csv system/frequency_response.csv system/step_response.csv system/step_metrics.csv
+           system/sine_response.csv system/dynamics_summary.csv) ;;
   flow-field)
     command=flow
     sets=(--set "Pilot stage/Model level=field" --set "Pilot stage/Field mesh resolution=0.6"

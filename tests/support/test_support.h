@@ -8,8 +8,9 @@
 
 namespace servodrift::test
 {
-  /// RV-1 with overrides ("Subsection/Key=value"); output into a fresh temporary directory. The
-  /// torque motor and the spring tube are at their reduced-order level unless the overrides say otherwise.
+  /// RV-1 with overrides ("Subsection/Key=value"); output into a fresh temporary directory. Every
+  /// stage is at its reduced-order level and `Dynamics/Enabled' is false unless the overrides say
+  /// otherwise.
   ValveDescription valve(std::vector<std::string> overrides = {});
   /// Runs the three reduced-order stages for `valve' (into valve.output.directory) and returns
   /// the tables directory.

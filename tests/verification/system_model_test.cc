@@ -227,8 +227,11 @@ TEST(DriftMap, OddInTheDeviationAngleForTheSymmetricValve)
         for (std::size_t t = 0; t < m.temperatures.size(); ++t)
           {
             const auto &minus = m.at(t, 0), &plus = m.at(t, 2);
+            // to the torque balance's tolerance: 1e-13 of its bracket (the nozzle contacts, 8e-3 rad)
+            // puts x_f within 1e-17 m, which the pilot gain of 0.54 MPa/um makes 5e-6 Pa
             const double scale = std::max(std::abs(plus.null_pressure_shift), 1.0);
-            EXPECT_LT(std::abs(plus.null_pressure_shift + minus.null_pressure_shift), 1e-7 * scale) << nulling << target;
+            EXPECT_LT(std::abs(plus.null_pressure_shift + minus.null_pressure_shift), 1e-7 * scale + 1e-5)
+              << nulling << target;
             EXPECT_LT(std::abs(*plus.null_shift_current + *minus.null_shift_current), 1e-12) << nulling << target;
             EXPECT_LT(std::abs(plus.zero_current.flapper_displacement + minus.zero_current.flapper_displacement), 1e-15);
           }

@@ -1,0 +1,60 @@
+#pragma once
+// The dynamics of the whole valve at each drift temperature (issue 23): modes and the linear
+// frequency response at the bias, the closed-form checks, the steady-state check, two step
+// responses, and the nonlinear sine responses (the linearity check and the large-signal study). The
+// cases (a temperature's linear analyses and steps; a temperature and a sine frequency) are shared
+// over the MPI ranks; the results are the same, bit for bit, on any number of ranks.
+#include "common/parameters/output.h"
+#include "system/dynamic_checks.h"
+#include "system/fixed_time_study.h"
+#include "system/linear_analysis.h"
+#include "system/sine_response.h"
+#include "system/steady_state_check.h"
+#include "system/step_response.h"
+#include "system/valve_model.h"
+
+#include <array>
+#include <complex>
+#include <optional>
+#include <vector>
+
+namespace servodrift::system
+{
+  /// The small-signal sine at one frequency, at the chosen amplitude and at half of it, beside the
+  /// linearisation.
+  struct SineCheck
+  {
+    double frequency = 0;                            ///< [Hz]
+    std::array<std::complex<double>, 3> linear{};    ///< H of p_B, x_v, x_f (sine_outputs) [unit/A]
+    std::array<std::complex<double>, 3> dc_gain{};   ///< H(0) of the same, the reference of every dB [unit/A]
+    SineResponse at_amplitude, at_half;
+  };
+
+  struct TemperatureDynamics
+  {
+    double temperature = 0;  ///< [degC]
+    double bias = 0;         ///< bias command [A]
+    ValveState bias_point;   ///< static operating point at the bias
+    double hydraulic_null = 0; ///< x_n of the valve (x_f = r theta - x_n) [m]
+    SpoolState bias_spool_state = SpoolState::regulating;
+    std::vector<Mode> modes; ///< at the bias
+    FrequencyResponse brake_pressure, spool_displacement; ///< at the bias
+    DynamicChecks checks;
+    SteadyStateCheck steady;
+    StepResponse large_step; ///< 0 -> rated current
+    StepResponse small_step; ///< bias -> bias + small step
+    std::vector<SineCheck> sine_checks;                ///< by `Dynamics/Sine frequencies'
+    std::vector<std::vector<SineResponse>> sine_study; ///< [frequency][amplitude]
+  };
+
+  struct DynamicsResults
+  {
+    std::vector<TemperatureDynamics> temperatures; ///< the drift temperatures
+    std::optional<FixedTimeStudy> fixed_time;      ///< model.md C9, when `Dynamics/Fixed-time study'
+  };
+
+  DynamicsResults compute_dynamics(const ValveModel &model, OutputParameters::Progress progress);
+
+  /// The armature's amplifier: u = R_c(T0) i_command under voltage drive [Ohm].
+  double amplifier_resistance(const ValveDescription &valve);
+} // namespace servodrift::system

@@ -1,0 +1,182 @@
+#include "system/dynamics_plots.h"
+
+#include "common/output_files.h"
+#include "common/units.h"
+#include "system/dynamics_output.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace servodrift::system
+{
+  namespace
+  {
+    std::string c(double v)
+    {
+      return format_cell(v);
+    }
+
+    /// gnuplot's `titles' word list of the plotted temperatures
+    std::string titles(const DynamicsResults &r, const std::vector<std::size_t> &selected)
+    {
+      std::string t;
+      for (std::size_t k : selected)
+        t += (t.empty() ? "'" : " '") + c(r.temperatures[k].temperature) + " degC'";
+      return t;
+    }
+
+    /// "plot 'modes.dat' index 0 using 1:<column> ... title '<name>', ..." (names may hold spaces)
+    std::string mode_plot(const std::vector<std::string> &names, int column)
+    {
+      std::string command = "plot ";
+      for (std::size_t k = 0; k < names.size(); ++k)
+        command += (k ? ", " : "") + std::string("'modes.dat' index ") + std::to_string(k) + " using 1:" +
+                   std::to_string(column) + " with linespoints title '" + names[k] + "'";
+      return command + "\n";
+    }
+
+    /// The continuous phase [deg] of a response H at f: the phase at the grid point nearest f plus
+    /// the argument of H(f) over H there
+    double linear_phase(const FrequencyResponse &r, double f, std::complex<double> h)
+    {
+      std::size_t k = 0;
+      for (std::size_t j = 1; j < r.frequencies.size(); ++j)
+        if (std::abs(std::log(r.frequencies[j] / f)) < std::abs(std::log(r.frequencies[k] / f)))
+          k = j;
+      return r.phase_degrees[k] + degrees(h / r.values[k]);
+    }
+
+    /// the drift temperature nearest the reference temperature
+    std::size_t nearest(const DynamicsResults &r, double T0)
+    {
+      std::size_t best = 0;
+      for (std::size_t k = 1; k < r.temperatures.size(); ++k)
+        if (std::abs(r.temperatures[k].temperature - T0) < std::abs(r.temperatures[best].temperature - T0))
+          best = k;
+      return best;
+    }
+  } // namespace
+
+  void write_dynamics_plots(const ValveDescription &valve, const DynamicsResults &r, const std::string &dir,
+                            PlotFiles &files)
+  {
+    if (!valve.output.plots || r.temperatures.empty())
+      return;
+    prepare_output_directory(dir);
+    const auto selected = representative_indices(r.temperatures.size());
+
+    // Bode plot of the brake pressure, blocks by temperature
+    std::ostringstream bode;
+    bode << "# blocks by temperature; frequency[Hz] brake_pressure_amplitude[dB] brake_pressure_phase[deg] "
+            "spool_displacement_amplitude[dB] spool_displacement_phase[deg]\n";
+    for (std::size_t k : selected)
+      {
+        const auto &d = r.temperatures[k];
+        bode << "# " << d.temperature << " degC\n";
+        for (std::size_t j = 0; j < d.brake_pressure.frequencies.size(); ++j)
+          bode << c(d.brake_pressure.frequencies[j]) << ' ' << c(d.brake_pressure.amplitude_db[j]) << ' '
+               << c(d.brake_pressure.phase_degrees[j]) << ' ' << c(d.spool_displacement.amplitude_db[j]) << ' '
+               << c(d.spool_displacement.phase_degrees[j]) << '\n';
+        bode << "\n\n";
+      }
+    write_file_atomically(dir + "/bode.dat", bode.str());
+
+    // large step responses, blocks by temperature
+    std::ostringstream step;
+    step << "# blocks by temperature; time[ms] brake_pressure[MPa] spool_displacement[um] flapper_displacement[um]\n";
+    double shown = 0; // time axis: past the slowest 2 % settling of p_B
+    for (std::size_t k : selected)
+      {
+        const auto &d = r.temperatures[k];
+        const auto &s = d.large_step;
+        shown = std::max(shown, 1.3 * s.metrics[0].settling_time.value_or(s.duration));
+        step << "# " << d.temperature << " degC\n";
+        for (std::size_t j = 0; j < s.times.size(); ++j)
+          step << c(1e3 * s.times[j]) << ' ' << c(1e-6 * s.states[j].brake_pressure) << ' '
+               << c(1e6 * s.states[j].spool_displacement) << ' '
+               << c(1e6 * (valve.armature.pivot_to_nozzle_distance * s.states[j].angle - d.hydraulic_null)) << '\n';
+        step << "\n\n";
+      }
+    write_file_atomically(dir + "/step.dat", step.str());
+
+    // modes vs temperature, blocks by mode name
+    std::map<std::string, std::ostringstream> by_name;
+    std::vector<std::string> names;
+    for (const auto &d : r.temperatures)
+      for (const auto &m : d.modes)
+        {
+          if (!by_name.count(m.name))
+            names.push_back(m.name);
+          by_name[m.name] << c(d.temperature) << ' ' << c(m.natural_frequency) << ' ' << c(m.damping_ratio) << '\n';
+        }
+    std::ostringstream modes;
+    modes << "# blocks by mode; temperature[degC] natural_frequency[Hz] damping_ratio[1]\n";
+    for (const auto &name : names)
+      modes << "# " << name << "\n" << by_name[name].str() << "\n\n";
+    write_file_atomically(dir + "/modes.dat", modes.str());
+
+    // the sine study at the temperature nearest T0: blocks by amplitude, the linear response last
+    const auto &d0 = r.temperatures[nearest(r, valve.operating.reference_temperature)];
+    std::ostringstream sine;
+    sine << "# " << d0.temperature << " degC; blocks by amplitude, then linear; frequency[Hz] "
+         << "brake_pressure_amplitude[dB re DC] brake_pressure_phase[deg]\n";
+    std::string sine_titles;
+    for (std::size_t a = 0; a < valve.dynamics.sine_amplitudes.size(); ++a)
+      {
+        sine << "# amplitude " << valve.dynamics.sine_amplitudes[a] << " of rated\n";
+        for (std::size_t j = 0; j < d0.sine_checks.size(); ++j)
+          {
+            // the phase continuous like the linear one's: the linear phase there plus the difference
+            const auto &check = d0.sine_checks[j];
+            const auto g = d0.sine_study[j][a].gain[0] / check.dc_gain[0];
+            const double linear = linear_phase(d0.brake_pressure, check.frequency, check.linear[0]);
+            sine << c(check.frequency) << ' ' << c(decibel(g)) << ' '
+                 << c(linear + degrees(d0.sine_study[j][a].gain[0] / check.linear[0])) << '\n';
+          }
+        sine << "\n\n";
+        sine_titles += (sine_titles.empty() ? "'" : " '") + c(100 * valve.dynamics.sine_amplitudes[a]) + " %'";
+      }
+    sine << "# linear\n";
+    for (std::size_t j = 0; j < d0.brake_pressure.frequencies.size(); ++j)
+      sine << c(d0.brake_pressure.frequencies[j]) << ' ' << c(d0.brake_pressure.amplitude_db[j]) << ' '
+           << c(d0.brake_pressure.phase_degrees[j]) << '\n';
+    write_file_atomically(dir + "/sine.dat", sine.str());
+
+    const std::string temperature_titles = "titles = \"" + titles(r, selected) + "\"\n";
+    const std::string n = std::to_string(selected.size() - 1);
+    const std::vector<Plot> plots = {
+      {"bode_brake_pressure",
+       temperature_titles + "set multiplot layout 2,1 title 'Brake pressure / command current, linearised at the bias'\n"
+                            "set logscale x\nset grid\nset key outside right\nset ylabel 'amplitude [dB re DC]'\n"
+                            "plot for [k=0:" + n + "] 'bode.dat' index k using 1:2 with lines lw 2 title word(titles,k+1)\n"
+                            "set xlabel 'frequency [Hz]'\nset ylabel 'phase [deg]'\n"
+                            "plot for [k=0:" + n + "] 'bode.dat' index k using 1:3 with lines lw 2 title word(titles,k+1)\n"
+                            "unset multiplot\n"},
+      {"step_response",
+       temperature_titles + "set multiplot layout 3,1 title 'Step 0 -> rated current'\nset grid\nset key outside right\n"
+                            "set xrange [0:" + c(1e3 * shown) + "]\nset ylabel 'p_B [MPa]'\n"
+                            "plot for [k=0:" + n + "] 'step.dat' index k using 1:2 with lines title word(titles,k+1)\n"
+                            "set ylabel 'x_v [um]'\n"
+                            "plot for [k=0:" + n + "] 'step.dat' index k using 1:3 with lines title word(titles,k+1)\n"
+                            "set xlabel 'time [ms]'\nset ylabel 'x_f [um]'\n"
+                            "plot for [k=0:" + n + "] 'step.dat' index k using 1:4 with lines title word(titles,k+1)\n"
+                            "unset multiplot\n"},
+      {"modes", "set multiplot layout 2,1 title 'Modes at the bias'\nset grid\nset key outside right\nset logscale y\n"
+                "set ylabel 'natural frequency [Hz]'\n" + mode_plot(names, 2) +
+                  "unset logscale y\nset xlabel 'temperature [degC]'\nset ylabel 'damping ratio [1]'\n" +
+                  mode_plot(names, 3) + "unset multiplot\n"},
+      {"sine_amplitude_study",
+       "titles = \"" + sine_titles + "\"\nset multiplot layout 2,1 title 'Brake pressure, nonlinear first harmonic at " +
+         c(d0.temperature) + " degC'\nset logscale x\nset grid\nset key outside right\nset ylabel 'amplitude [dB re DC]'\n"
+         "plot 'sine.dat' index " + std::to_string(valve.dynamics.sine_amplitudes.size()) +
+         " using 1:2 with lines lc 'black' title 'linear', for [k=0:" + std::to_string(valve.dynamics.sine_amplitudes.size() - 1) +
+         "] 'sine.dat' index k using 1:2 with linespoints title word(titles,k+1)\n"
+         "set xlabel 'frequency [Hz]'\nset ylabel 'phase [deg]'\n"
+         "plot 'sine.dat' index " + std::to_string(valve.dynamics.sine_amplitudes.size()) +
+         " using 1:3 with lines lc 'black' title 'linear', for [k=0:" + std::to_string(valve.dynamics.sine_amplitudes.size() - 1) +
+         "] 'sine.dat' index k using 1:3 with linespoints title word(titles,k+1)\nunset multiplot\n"}};
+    render_plots(valve, plots, dir, files);
+  }
+} // namespace servodrift::system

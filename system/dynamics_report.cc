@@ -1,0 +1,179 @@
+#include "system/dynamics_report.h"
+
+#include "common/units.h"
+#include "system/dynamics_output.h"
+#include "system/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace servodrift::system
+{
+  namespace
+  {
+    std::string fmt(double v, int digits = 4)
+    {
+      return report_number(v, digits);
+    }
+    std::string fmt(const std::optional<double> &v, double scale = 1, int digits = 4)
+    {
+      return v ? fmt(*v * scale, digits) : "-";
+    }
+
+    const Mode &armature_mode(const TemperatureDynamics &d)
+    {
+      return *std::max_element(d.modes.begin(), d.modes.end(),
+                               [](const Mode &a, const Mode &b) { return a.participation[0] < b.participation[0]; });
+    }
+
+    void summary_table(std::ostream &out, const DynamicsResults &r)
+    {
+      out << "| T [degC] | p_B at bias [MPa] | bandwidth -3 dB [Hz] | -90 deg [Hz] | armature f_n [Hz] | armature zeta | "
+             "step 0 -> rated: p_B rise [ms] | overshoot [%] | settling 2 % [ms] | small step: overshoot [%] | settling [ms] |\n"
+          << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+      for (const auto &d : r.temperatures)
+        {
+          const Mode &a = armature_mode(d);
+          const auto &L = d.large_step.metrics[0], &S = d.small_step.metrics[0];
+          out << "| " << fmt(d.temperature) << " | " << fmt(1e-6 * d.bias_point.brake_pressure) << " | "
+              << fmt(d.brake_pressure.bandwidth) << " | " << fmt(d.brake_pressure.phase_90_frequency) << " | "
+              << fmt(a.natural_frequency) << " | " << fmt(a.damping_ratio, 3) << " | " << fmt(L.rise_time, 1e3) << " | "
+              << fmt(L.overshoot, 3) << " | " << fmt(L.settling_time, 1e3) << " | " << fmt(S.overshoot, 3) << " | "
+              << fmt(S.settling_time, 1e3) << " |\n";
+        }
+      out << "\n";
+    }
+
+    void checks(std::ostream &out, const DynamicsResults &r)
+    {
+      double armature = 0, tau = 0, drift = 0, rest = 0, worst_db = 0, worst_deg = 0, halving_db = 0, halving_deg = 0;
+      for (const auto &d : r.temperatures)
+        {
+          armature = std::max(armature, std::abs(d.checks.armature_blocked / d.checks.armature_closed_form - 1));
+          tau = std::max(tau, std::abs(d.checks.pressure_time_constant / d.checks.pressure_time_constant_tables - 1));
+          drift = std::max(drift, d.steady.drift_from_static);
+          rest = std::max(rest, d.steady.distance_from_rest);
+          for (const auto &c : d.sine_checks)
+            {
+              const auto h = c.at_amplitude.gain[0] / c.linear[0], g = c.at_half.gain[0] / c.at_amplitude.gain[0];
+              worst_db = std::max(worst_db, std::abs(decibel(h)));
+              worst_deg = std::max(worst_deg, std::abs(degrees(h)));
+              halving_db = std::max(halving_db, std::abs(decibel(g)));
+              halving_deg = std::max(halving_deg, std::abs(degrees(g)));
+            }
+        }
+      const auto &first = r.temperatures.front().checks, &last = r.temperatures.back().checks;
+      out << "Checks (every temperature; `system/dynamics_summary.csv`):\n\n"
+          << "- static = dynamic at zero rates: integrated from the static operating point the valve stays within "
+          << fmt(drift, 2) << " of each state's scale (required < 1e-8); started from rest it settles within "
+          << fmt(rest, 2) << " of it (required < 1e-6).\n"
+          << "- armature mode with the spool blocked and the control pressures following the flapper (model.md 2.5, "
+             "C13): "
+          << fmt(first.armature_blocked) << " Hz against sqrt((K_a - K_m + r^2 K_f)/J_a)/(2 pi) = "
+          << fmt(first.armature_closed_form) << " Hz at " << fmt(r.temperatures.front().temperature)
+          << " degC (largest difference " << fmt(100 * armature, 2)
+          << " %). With compressible cavities it falls to " << fmt(first.armature_compressible)
+          << " Hz, in the coupled valve to " << fmt(first.armature_coupled) << " Hz (" << fmt(last.armature_coupled)
+          << " Hz at " << fmt(r.temperatures.back().temperature) << " degC): doc/method.md explains why.\n"
+          << "- control-cavity pressure time constant at null: " << fmt(1e3 * first.pressure_time_constant) << " ms from "
+             "the linearisation, V/(beta_e dQ/dp) = " << fmt(1e3 * first.pressure_time_constant_tables)
+          << " ms with the tables' slopes (largest difference " << fmt(100 * tau, 2) << " %), "
+          << fmt(1e3 * first.pressure_time_constant_closed_form) << " ms for turbulent orifices (Q ~ sqrt(dp)).\n"
+          << "- small-signal sine against the linearisation: largest difference " << fmt(worst_db, 2) << " dB and "
+          << fmt(worst_deg, 2) << " deg (required 0.5 dB, 3 deg); halving the amplitude moves the response by "
+          << fmt(halving_db, 2) << " dB and " << fmt(halving_deg, 2)
+          << " deg at most. The amplitude is chosen per frequency so that the linear excursion of spool and flapper "
+             "stays within `Dynamics/Linearity margin` of the distance to their nearest edge.\n\n";
+    }
+
+    void study(std::ostream &out, const ValveDescription &valve, const DynamicsResults &r)
+    {
+      const auto &p = valve.dynamics;
+      out << "Large signals (`Dynamics/Sine amplitudes`, `system/sine_response.csv`): the first harmonic of p_B "
+             "against the linearisation, over all temperatures and sine frequencies:\n\n"
+          << "| amplitude [% of rated] | largest departure [dB] | at [Hz] | periodic | sub-harmonic responses | "
+             "metering edge opened | flapper on a nozzle | spool on a stop |\n|---|---|---|---|---|---|---|---|\n";
+      for (std::size_t a = 0; a < p.sine_amplitudes.size(); ++a)
+        {
+          double worst = 0, at = 0;
+          std::size_t periodic = 0, sub = 0, lap = 0, contact = 0, stop = 0, n = 0;
+          for (const auto &d : r.temperatures)
+            for (std::size_t j = 0; j < d.sine_checks.size(); ++j)
+              {
+                const SineResponse &s = d.sine_study[j][a];
+                const double departure = decibel(s.gain[0] / d.sine_checks[j].linear[0]);
+                if (std::abs(departure) > std::abs(worst))
+                  worst = departure, at = s.frequency;
+                ++n;
+                periodic += s.periodic;
+                sub += s.periodic && s.response_periods > 1;
+                lap += s.beyond_lap;
+                contact += s.flapper_contact;
+                stop += s.spool_on_stop;
+              }
+          const auto of = [&](std::size_t k) { return std::to_string(k) + " of " + std::to_string(n); };
+          out << "| " << fmt(100 * p.sine_amplitudes[a]) << " | " << fmt(worst, 3) << " | " << fmt(at) << " | "
+              << of(periodic) << " | " << of(sub) << " | " << of(lap) << " | " << of(contact) << " | " << of(stop)
+              << " |\n";
+        }
+      out << "\nA sub-harmonic response repeats only after m > 1 input periods (`response_periods`); a metering "
+             "edge opened means the spool left its lap, where the brake port's flow gain is that of the orifice, "
+             "not of the lap leakage.\n\n";
+    }
+
+    void fixed_time(std::ostream &out, const FixedTimeStudy &s)
+    {
+      out << "### Fixed-time readings of the start-up (model.md C9)\n\n"
+          << "The start-up of the valve from rest (supply switched on, every pressure at return, armature and spool "
+             "centred), theta_d = "
+          << fmt(s.deviation_angle / units::degree) << " deg against 0; drift measures read at fixed times. Slope "
+             "ratio = (d(50) - d(40))/(d(120) - d(110)); paper: "
+          << paper_displacement_slope_ratio << " (spool displacement, i = 0) and " << paper_pressure_slope_ratio
+          << " (brake pressure, rated current).\n\n| reading time [s] | spool displacement ratio | brake pressure ratio |\n"
+             "|---|---|---|\n";
+      for (std::size_t j = 0; j < s.reading_times.size(); ++j)
+        out << "| " << fmt(s.reading_times[j]) << (s.best && *s.best == j ? " (nearest the paper)" : "") << " | "
+            << fmt(s.displacement_slope_ratio[j], 1, 3) << " | " << fmt(s.pressure_slope_ratio[j], 1, 3) << " |\n";
+      out << "| steady state | " << fmt(s.static_displacement_slope_ratio, 1, 3) << " | "
+          << fmt(s.static_pressure_slope_ratio, 1, 3) << " |\n\n";
+      if (!s.best)
+        out << "No reading time gives both ratios positive: no fixed-time reading reproduces the paper's shapes.\n\n";
+      else
+        {
+          const double rx = *s.displacement_slope_ratio[*s.best], rp = *s.pressure_slope_ratio[*s.best];
+          const bool close = std::abs(std::log(rx / paper_displacement_slope_ratio)) < std::log(1.25) &&
+                             std::abs(std::log(rp / paper_pressure_slope_ratio)) < std::log(1.25);
+          out << "Nearest the paper: t = " << fmt(s.reading_times[*s.best]) << " s with " << fmt(rx, 3) << " and "
+              << fmt(rp, 3) << (close ? ": both within 25 % of the paper's." : ": not within 25 % of the paper's for both.")
+              << " All readings: `system/fixed_time_study.csv`; doc/validation.md discusses the result.\n\n";
+        }
+    }
+  } // namespace
+
+  void dynamics_section(std::ostream &out, const ValveDescription &valve, const DynamicsResults &r)
+  {
+    out << "## Dynamics\n\n";
+    if (r.temperatures.empty())
+      return;
+    const auto &p = valve.dynamics;
+    out << "The valve's equations (E29-E37) integrated with CVODE (BDF) and linearised at the bias, "
+        << fmt(1e3 * p.bias * valve.operating.rated_current) << " mA (" << fmt(100 * p.bias)
+        << " % of rated); " << (valve.torque_motor.voltage_drive ? "voltage" : "current") << " drive, brake port "
+        << (valve.spool.brake_port == SpoolParameters::BrakePort::blocked_port ? "blocked at the valve" :
+                                                                                "into the brake volume V_B")
+        << " with no load flow. Bandwidth and -90 degree frequency of the brake pressure per command current; "
+           "the armature mode is the one with the largest armature participation (`system/modes.csv`).\n\n";
+    summary_table(out, r);
+    for (const auto &d : r.temperatures)
+      for (const auto &m : d.modes)
+        if (m.eigenvalue.real() > 0)
+          out << "**Unstable at " << fmt(d.temperature) << " degC:** the " << m.name << " mode (" << fmt(m.natural_frequency)
+              << " Hz) grows at " << fmt(m.eigenvalue.real()) << " 1/s: the valve oscillates about the bias instead of "
+                 "settling on it, so its bandwidth and step figures there describe that oscillation.\n\n";
+    checks(out, r);
+    study(out, valve, r);
+    if (r.fixed_time)
+      fixed_time(out, *r.fixed_time);
+  }
+} // namespace servodrift::system

@@ -1,0 +1,51 @@
+#pragma once
+// The nonlinear frequency response (issue 23): the command i(t) = i_bias + a sin(2 pi f t), started
+// on the linearisation's own periodic solution (so that a small amplitude starts periodic), is
+// integrated period by period until the state recurs after one period or, for a sub-harmonic, after
+// m periods (a periodic steady state); a slow approach is accelerated by extrapolating the states at
+// the period starts to their limit. Then the first harmonic of each output over the input's, and
+// how far the response is from linear: the harmonic distortion, the sub-harmonic content, the edges
+// it crossed.
+#include "common/parameters/dynamics.h"
+#include "system/linear_analysis.h"
+#include "system/valve_dynamics.h"
+
+#include <array>
+#include <complex>
+
+namespace servodrift::system
+{
+  /// The outputs of a sine response, in the order of its arrays.
+  inline constexpr std::array<Output, 3> sine_outputs = {Output::brake_pressure, Output::spool_displacement,
+                                                         Output::flapper_displacement};
+
+  struct SineResponse
+  {
+    double frequency = 0;  ///< [Hz]
+    double amplitude = 0;  ///< command amplitude [A]
+    unsigned int periods = 0; ///< periods integrated [1]
+    bool periodic = false; ///< the state recurred within `Dynamics/Maximum periods'
+    unsigned int response_periods = 1; ///< the response repeats after this many input periods (> 1: a sub-harmonic) [1]
+    unsigned int extrapolations = 0;   ///< restarts from an extrapolated periodic state [1]
+    double last_change = 0; ///< scaled change of the state over the last period / the motion [1]
+    std::array<std::complex<double>, 3> gain{};   ///< first harmonic / input's, per output [unit/A]
+    std::array<double, 3> minimum{}, maximum{};  ///< over the last period [SI]
+    double distortion = 0;  ///< total harmonic distortion of p_B: harmonics 2-10 / first [1]
+    double subharmonic = 0; ///< p_B's content below f (lines j f/m), relative to its first harmonic [1]
+    bool flapper_contact = false; ///< the flapper touched a nozzle in the last period
+    bool beyond_lap = false;      ///< the spool opened a metering edge in the last period
+    bool spool_on_stop = false;   ///< the spool reached a stroke limit in the last period
+    bool left_tables = false; ///< a pressure went beyond the flow tables (constant C_d)
+  };
+
+  /// `bias_point' is the static operating point at the bias command `bias' [A], `linearisation' the
+  /// valve linearised there.
+  SineResponse sine_response(const ValveDynamics &dynamics, const Linearisation &linearisation,
+                             const ValveState &bias_point, double bias, double frequency, double amplitude,
+                             const DynamicsParameters &parameters);
+
+  /// The largest amplitude, up to `largest', whose linear response keeps the spool and the flapper
+  /// within `margin' of the distance from the bias to their nearest edge (lap edges, stops, nozzles).
+  double linear_amplitude(const ValveDynamics &dynamics, const Linearisation &linearisation,
+                          const ValveState &bias_point, double frequency, double largest, double margin);
+} // namespace servodrift::system
