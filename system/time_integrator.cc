@@ -86,6 +86,7 @@ namespace servodrift::system
     : cvode(std::make_unique<Cvode>())
     , rhs(std::move(rhs_))
     , jacobian(std::move(settings.jacobian))
+    , maximum_steps(settings.maximum_steps)
     , context(std::move(context_))
     , y_now(n, 0.0)
   {
@@ -121,8 +122,6 @@ namespace servodrift::system
       fail(flag, "CVodeSetLinearSolver");
     if (jacobian && (flag = CVodeSetJacFn(c.memory, evaluate_jacobian)) != CV_SUCCESS)
       fail(flag, "CVodeSetJacFn");
-    if ((flag = CVodeSetMaxNumSteps(c.memory, settings.maximum_steps)) != CV_SUCCESS)
-      fail(flag, "CVodeSetMaxNumSteps");
     if ((flag = CVodeSetMaxOrd(c.memory, settings.maximum_order)) != CV_SUCCESS)
       fail(flag, "CVodeSetMaxOrd");
     if ((flag = CVodeSetStabLimDet(c.memory, settings.stability_limit_detection ? SUNTRUE : SUNFALSE)) != CV_SUCCESS)
@@ -164,9 +163,21 @@ namespace servodrift::system
 
   const std::vector<double> &TimeIntegrator::advance_to(double t)
   {
+    long steps = 0;
     while (t_now < t)
-      step(t);
+      {
+        step(t);
+        count(++steps);
+      }
     return y_now;
+  }
+
+  void TimeIntegrator::count(long steps) const
+  {
+    if (steps > maximum_steps)
+      throw std::runtime_error(context + ", t = " + format_number(t_now) + " s: the time integration took more than " +
+                               std::to_string(maximum_steps) + " internal steps (CV_TOO_MUCH_WORK); raise "
+                               "`Dynamics/Maximum steps' or loosen `Dynamics/Relative tolerance'");
   }
 
   double TimeIntegrator::step(double t_limit)
@@ -187,10 +198,12 @@ namespace servodrift::system
 
   double TimeIntegrator::integrate(double t_end, const std::function<bool(double, double)> &on_step)
   {
+    long steps = 0;
     while (t_now < t_end)
       {
         const double t_previous = t_now;
         step(t_end);
+        count(++steps);
         if (!on_step(t_previous, t_now))
           break;
       }

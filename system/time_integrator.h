@@ -24,7 +24,7 @@ namespace servodrift::system
     {
       double relative_tolerance = 1e-8;
       std::vector<double> absolute_tolerances; ///< one per component
-      long maximum_steps = 1000000;            ///< internal steps per call
+      long maximum_steps = 1000000;            ///< internal steps per advance_to() or integrate()
       int maximum_order = 5;                   ///< of the BDF formulas
       bool stability_limit_detection = true;   ///< CVODE's BDF stability limit detection (STALD)
       Jacobian jacobian;                       ///< empty: CVODE's own difference quotients
@@ -65,10 +65,13 @@ namespace servodrift::system
     std::unique_ptr<Cvode> cvode;
     RightHandSide rhs;
     Jacobian jacobian;
+    long maximum_steps;
     std::string context;
     double t_now = 0;
     std::vector<double> y_now;
 
     [[noreturn]] void fail(int flag, const char *call) const;
+    /// Throws once a call has taken more than maximum_steps internal steps.
+    void count(long steps) const;
   };
 } // namespace servodrift::system

@@ -62,7 +62,8 @@ namespace servodrift
                       "Absolute local error tolerance of the time integration, as a fraction of each "
                       "state's scale (x0/r, p_s - p_r, the stroke limit, the rated current). [1]");
     prm.declare_entry("Maximum steps", "1000000", Patterns::Integer(100, 1000000000),
-                      "Most internal steps of the time integration between two outputs. [1]");
+                      "Most internal steps of one integration (a step response, a sine response, a chunk "
+                      "of the start-up) before it stops with an error naming temperature and time. [1]");
     prm.declare_entry("Fixed-time study", "false", Patterns::Bool(),
                       "model.md C9: integrate the start-up of the valve (supply switched on with every "
                       "pressure at return, armature and spool centred) at each drift temperature, with "

@@ -1,0 +1,406 @@
+// The valve's dynamics (issue 23) on RV-1's reduced-order tables: the static operating point is the
+// dynamic model at zero rates; the closed forms of model.md 2.5 (blocked armature) and of the
+// control-cavity pressure; mass conservation of a cavity; a symmetric valve odd in the current; the
+// linearisation against the static solver (DC gain), the nonlinear step (small step) and the
+// nonlinear sine (small amplitude); saturation at a nozzle; errors that name temperature and time.
+#include "common/error.h"
+#include "common/thermal_laws.h"
+#include "common/units.h"
+#include "system/dynamic_checks.h"
+#include "system/dynamics.h"
+#include "system/linear_analysis.h"
+#include "system/sine_response.h"
+#include "system/steady_state_check.h"
+#include "system/step_response.h"
+#include "system/valve_model.h"
+#include "tests/support/test_support.h"
+
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace servodrift;
+using namespace servodrift::system;
+using test::relative;
+
+namespace
+{
+  struct Valve
+  {
+    ValveDescription description;
+    ValveModel model;
+    explicit Valve(const std::vector<std::string> &overrides = {})
+      : description(test::valve(overrides))
+      , model(description, StageTables::read(test::write_reduced_order_tables(description), description))
+    {}
+    ValveDynamics dynamics(double T, HeldParts held = {}, const Offsets &offsets = {}) const
+    {
+      return ValveDynamics(model.equations(T, offsets), amplifier_resistance(description),
+                           description.operating.rated_current, held);
+    }
+  };
+
+  const Valve &rv1()
+  {
+    static const Valve v;
+    return v;
+  }
+
+  constexpr double rated = 0.02, bias = 0.01;
+
+  /// The largest |F_k|/(scale_k w_ref): how far a state is from rest, in each state's scale per
+  /// armature time unit (w_ref = sqrt(K_a/J_a)).
+  double scaled_rates(const ValveDynamics &d, const ValveState &s, double command)
+  {
+    std::vector<double> y = d.vector_of(s), f(y.size());
+    d.rates(y.data(), command, f.data());
+    const double w_ref = std::sqrt(d.equations().spring_stiffness() / d.equations().inertia());
+    double worst = 0;
+    for (std::size_t k = 0; k < y.size(); ++k)
+      worst = std::max(worst, std::abs(f[k]) / (d.scales()[k] * w_ref));
+    return worst;
+  }
+} // namespace
+
+TEST(Dynamics, StaticPointIsTheDynamicModelAtZeroRates)
+{
+  // One set of equations: every rate vanishes at the static operating point, to the static solver's
+  // root tolerances (1e-13 of each bracket), free or saturated.
+  const auto &v = rv1();
+  for (double T : {40.0, 80.0, 120.0})
+    for (double i : {0.0, bias, rated, -rated})
+      {
+        const auto d = v.dynamics(T);
+        const OperatingPoint op = v.model.solve(d.equations(), i);
+        EXPECT_LT(scaled_rates(d, op.state(), i), 1e-9) << T << " degC, " << i << " A, " << to_string(op.spool.state);
+      }
+  // pressed onto a nozzle (E38 with theta_d = 1 deg) and the spool on its stop: the contact and the
+  // stop hold the static point too
+  Offsets pressed;
+  pressed.spring_tube_rest_angle = -1.0 * units::degree;
+  const auto d = v.dynamics(40, {}, pressed);
+  const OperatingPoint op = v.model.solve(d.equations(), 0.0);
+  ASSERT_EQ(op.flapper, FlapperState::on_right_nozzle);
+  ASSERT_EQ(op.spool.state, SpoolState::on_negative_stop);
+  EXPECT_LT(scaled_rates(d, op.state(), 0.0), 1e-9);
+}
+
+TEST(Dynamics, StaysAtTheStaticPointAndSettlesOnItFromRest)
+{
+  // issue 23: from the static point the drift stays below 1e-8 of each state's scale; from rest
+  // (every pressure at return, armature and spool centred) the valve settles within 1e-6 of it
+  const auto &v = rv1();
+  for (double T : {40.0, 120.0})
+    for (double i : {bias, rated})
+      {
+        const auto c = steady_state_check(v.model, v.dynamics(T), i, v.description.dynamics);
+        EXPECT_LT(c.drift_from_static, 1e-8) << T << " " << i;
+        EXPECT_LT(c.distance_from_rest, 1e-6) << T << " " << i;
+      }
+}
+
+TEST(Dynamics, BlockedArmatureModeIsTheClosedForm)
+{
+  // model.md 2.5, C13: spool blocked, control pressures following the flapper at once: the
+  // armature's undamped frequency is sqrt((K_a - K_m + r^2 K_f)/J_a), about 1 kHz. The closed form
+  // takes K_m as the Richardson slope of the torque table at null and K_f from the bridge by central
+  // differences; the linearisation differentiates the PCHIP interpolant at the node: 0.1 % apart.
+  const auto &v = rv1();
+  for (double T : {40.0, 80.0, 120.0})
+    {
+      const DynamicChecks c = dynamic_checks(v.model, v.dynamics(T));
+      EXPECT_NEAR(c.armature_closed_form, 1005, 10) << T;
+      EXPECT_LT(relative(c.armature_blocked, c.armature_closed_form), 2e-3) << T;
+      // compressible cavities lag the flapper, and a free spool takes up pilot flow: each lowers it
+      EXPECT_LT(c.armature_compressible, 0.9 * c.armature_blocked) << T;
+      EXPECT_LT(c.armature_coupled, c.armature_compressible) << T;
+    }
+}
+
+TEST(Dynamics, ControlCavityPressureTimeConstant)
+{
+  // E33 with the flapper and the spool held: dp/dt = beta_e/V (Q_0(p_s - p) - Q_N(p - p_r)), so
+  // tau = V/(beta_e (dQ_0/dp + dQ_N/dp)). The linearisation equals it with the tables' slopes to the
+  // difference quotients' accuracy (1e-6); for turbulent orifices (Q ~ sqrt(dp)) the closed form is
+  // within the Reynolds-number dependence of C_d (E21, E22: d ln C_d/d ln dp of a few %).
+  const auto &v = rv1();
+  for (double T : {40.0, 120.0})
+    {
+      const DynamicChecks c = dynamic_checks(v.model, v.dynamics(T));
+      EXPECT_LT(relative(c.pressure_time_constant, c.pressure_time_constant_tables), 1e-6) << T;
+      EXPECT_LT(relative(c.pressure_time_constant, c.pressure_time_constant_closed_form), 0.1) << T;
+    }
+  // in the time domain: p_L, disturbed by 0.1 % of the span, decays by e in one time constant
+  const auto d = v.dynamics(40, HeldParts{true, false, true});
+  const OperatingPoint null = v.model.solve(d.equations(), 0.0);
+  const DynamicChecks c = dynamic_checks(v.model, v.dynamics(40));
+  std::vector<double> y0 = d.vector_of(null.state());
+  const double disturbance = 1e-3 * (21e6 - 0.4e6);
+  y0[2] += disturbance;
+  const auto integrator = d.integrator([](double) { return 0.0; }, v.description.dynamics, "test", d.vector_of(null.state()));
+  integrator->start(0.0, y0);
+  const double left = integrator->advance_to(c.pressure_time_constant)[2] - null.bridge.left_pressure;
+  EXPECT_LT(relative(left / disturbance, std::exp(-1.0)), 2e-3); // second order in the disturbance
+}
+
+TEST(Dynamics, CavityMassIsConservedOverAStep)
+{
+  // E33: the net flow into a control cavity is the compressibility change plus the swept volume,
+  // int (Q_0 - Q_N) dt = int V/beta_e dp + A_v dx_v with V = V_0 + A_v x_v. Over the step 0 -> rated
+  // the flows are integrated (Simpson on every internal step) apart from the right-hand side, and
+  // the pressure term by the trapezoid rule on the same points.
+  const auto &v = rv1();
+  for (const bool spool_held : {true, false})
+    {
+      const auto d = v.dynamics(40, HeldParts{false, false, spool_held});
+      const ValveEquations &eq = d.equations();
+      const OperatingPoint start = v.model.solve(eq, 0.0);
+      const auto integrator =
+        d.integrator([](double) { return rated; }, v.description.dynamics, "test", d.vector_of(start.state()));
+      integrator->start(0.0, d.vector_of(start.state()));
+      const auto net_flow = [&](const std::vector<double> &y) {
+        return eq.orifice_flow(eq.supply_pressure() - y[2]) - eq.nozzle_flow(eq.gaps(y[0])[0], y[2] - eq.return_pressure());
+      };
+      const double A_v = eq.control_area(), V_0 = eq.control_cavity_volume(), beta = eq.bulk_modulus();
+      double flow = 0, compression = 0;
+      std::vector<double> previous = integrator->y();
+      integrator->integrate(0.02, [&](double t0, double t1) {
+        const std::vector<double> &y1 = integrator->y(), middle = integrator->interpolate(0.5 * (t0 + t1));
+        flow += (t1 - t0) / 6 * (net_flow(previous) + 4 * net_flow(middle) + net_flow(y1));
+        const auto V = [&](const std::vector<double> &y) { return V_0 + A_v * y[4]; };
+        compression += (V(previous) + 4 * V(middle) + V(y1)) / 6 / beta * (y1[2] - previous[2]);
+        previous = y1;
+        return true;
+      });
+      const double swept = A_v * (previous[4] - start.spool.displacement);
+      // 3e-5 (spool held) and 3e-8 (spool free) of the flow: the quadratures' and the integrator's errors
+      EXPECT_LT(std::abs(flow - compression - swept), 1e-4 * std::abs(flow)) << spool_held;
+      if (spool_held)
+        {
+          EXPECT_EQ(swept, 0.0);
+        }
+    }
+}
+
+TEST(Dynamics, SymmetricValveIsOddInTheCurrent)
+{
+  // The pilot and the motor are symmetric: p_L - p_R is odd in the current, statically and, with
+  // the spool held centred (the three-way spool itself is not symmetric, and off centre it makes the
+  // two control cavities differ), along the whole transient of a step.
+  const auto &v = rv1();
+  for (double T : {40.0, 120.0})
+    {
+      EXPECT_LT(std::abs(v.model.solve(T, rated, {}).control_pressure_difference() +
+                         v.model.solve(T, -rated, {}).control_pressure_difference()),
+                1e-5);
+      const auto d = v.dynamics(T, HeldParts{false, false, true});
+      ValveState start = v.model.solve(d.equations(), 0.0).state();
+      start.spool_displacement = 0;
+      const auto response = [&](double i) {
+        const auto integrator = d.integrator([i](double) { return i; }, v.description.dynamics, "test", d.vector_of(start));
+        integrator->start(0.0, d.vector_of(start));
+        std::vector<double> dp;
+        for (int k = 1; k <= 100; ++k)
+          {
+            const auto &y = integrator->advance_to(2e-4 * k);
+            dp.push_back(y[2] - y[3]);
+          }
+        return dp;
+      };
+      const auto plus = response(rated), minus = response(-rated);
+      double worst = 0, largest = 0;
+      for (std::size_t k = 0; k < plus.size(); ++k)
+        {
+          worst = std::max(worst, std::abs(plus[k] + minus[k]));
+          largest = std::max(largest, std::abs(plus[k]));
+        }
+      EXPECT_LT(worst, 1e-5 * largest) << T; // the integrator's step sequences differ: rtol 1e-6
+    }
+}
+
+TEST(Dynamics, LinearisationAtZeroFrequencyIsTheStaticSensitivity)
+{
+  // H(0) = -C A^-1 B against the static solver's dp_B/di by central differences at the bias
+  const auto &v = rv1();
+  for (double T : {40.0, 120.0})
+    {
+      const auto d = v.dynamics(T);
+      const Linearisation l = linearise(d, v.model.solve(d.equations(), bias).state(), bias);
+      const double h = 1e-4 * rated;
+      const double static_gain = (v.model.solve(T, bias + h, {}).spool.brake_pressure -
+                                  v.model.solve(T, bias - h, {}).spool.brake_pressure) / (2 * h);
+      EXPECT_LT(relative(std::real(transfer(l, Output::brake_pressure, 0.0)), static_gain), 1e-4) << T;
+      EXPECT_LT(std::abs(std::imag(transfer(l, Output::brake_pressure, 0.0))), 1e-12 * static_gain);
+    }
+}
+
+TEST(Dynamics, ModesAreNamedAndComplete)
+{
+  const auto &v = rv1();
+  const auto d = v.dynamics(40);
+  const Linearisation l = linearise(d, v.model.solve(d.equations(), bias).state(), bias);
+  const auto m = modes(l);
+  std::size_t states = 0;
+  for (const Mode &mode : m)
+    {
+      states += mode.eigenvalue.imag() > 0 ? 2 : 1;
+      double sum = 0;
+      for (double p : mode.participation)
+        sum += p;
+      EXPECT_NEAR(sum, 1.0, 1e-12);
+      EXPECT_LT(mode.eigenvalue.real(), 0.0) << mode.name; // RV-1 is stable at the bias
+    }
+  EXPECT_EQ(states, 7u);
+  std::vector<std::string> names;
+  for (const Mode &mode : m)
+    names.push_back(mode.name);
+  for (const char *expected : {"armature-flapper", "pilot pressures", "spool + brake volume", "pilot pressures + spool"})
+    EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
+}
+
+TEST(Dynamics, SmallNonlinearStepFollowsTheLinearisation)
+{
+  // A step of 0.01 % of rated at the bias: the nonlinear p_B(t) against the linear step response
+  // C A^-1 (exp(A t) - I) B di; and the step metrics against those of the linear response.
+  const auto &v = rv1();
+  const auto d = v.dynamics(80);
+  const OperatingPoint point = v.model.solve(d.equations(), bias);
+  const Linearisation l = linearise(d, point.state(), bias);
+  const double di = 1e-4 * rated;
+  const auto s = step_response(v.model, d, bias, bias + di, v.description.dynamics, 400);
+  // in the states' scales, where A's entries are rates of about 1e2..1e5 1/s
+  const std::size_t n = l.A.rows();
+  Eigen::MatrixXd A(n, n);
+  Eigen::VectorXd b(n);
+  for (std::size_t j = 0; j < n; ++j)
+    {
+      b(j) = l.B(j) * di / l.scales[j];
+      for (std::size_t k = 0; k < n; ++k)
+        A(j, k) = l.A(j, k) * l.scales[k] / l.scales[j];
+    }
+  const auto linear = [&](double t) {
+    const Eigen::MatrixXd E = (A * t).exp() - Eigen::MatrixXd::Identity(n, n);
+    return (A.partialPivLu().solve(E * b))(6) * l.scales[6];
+  };
+  const double change = s.metrics[0].final - s.metrics[0].initial;
+  double worst = 0;
+  for (std::size_t k = 0; k < s.times.size(); k += 7)
+    {
+      worst = std::max(worst, std::abs(s.states[k].brake_pressure - point.spool.brake_pressure - linear(s.times[k])));
+    }
+  // the valve's own nonlinearity: 1.5 % of the change for a step of 1e-3 rated, 0.15 % for 1e-4
+  EXPECT_LT(worst, 5e-3 * std::abs(change));
+  EXPECT_LT(relative(change, -(A.partialPivLu().solve(b))(6) * l.scales[6]), 1e-3);
+  // the linear response's rise time by bisection on the matrix exponential
+  const auto crossing = [&](double level) {
+    double a = 0, z = s.metrics[0].settling_time.value();
+    for (int k = 0; k < 60; ++k)
+      (linear(0.5 * (a + z)) < level * change ? a : z) = 0.5 * (a + z);
+    return 0.5 * (a + z);
+  };
+  ASSERT_TRUE(s.metrics[0].rise_time.has_value());
+  EXPECT_LT(relative(*s.metrics[0].rise_time, crossing(0.9) - crossing(0.1)), 5e-3);
+}
+
+TEST(Dynamics, SmallSineMatchesTheLinearisation)
+{
+  // issue 23: within 0.5 dB and 3 degrees of the linearisation, below, at and above the spool and
+  // brake-volume resonance (53 Hz at 40 degC) and at the armature's; halving the amplitude changes
+  // the response by less than the gap to the linearisation (the rest is the valve's nonlinearity)
+  const auto &v = rv1();
+  const auto &p = v.description.dynamics;
+  const auto d = v.dynamics(40);
+  const OperatingPoint point = v.model.solve(d.equations(), bias);
+  const Linearisation l = linearise(d, point.state(), bias);
+  for (double f : {10.0, 53.0, 300.0, 730.0})
+    {
+      const double a = linear_amplitude(d, l, point.state(), f, p.sine_check_amplitude * rated, p.linearity_margin);
+      const auto full = sine_response(d, l, point.state(), bias, f, a, p);
+      const auto half = sine_response(d, l, point.state(), bias, f, a / 2, p);
+      const auto H = transfer(l, Output::brake_pressure, f);
+      EXPECT_TRUE(full.periodic) << f;
+      EXPECT_EQ(full.response_periods, 1u) << f;
+      EXPECT_LT(std::abs(20 * std::log10(std::abs(full.gain[0] / H))), 0.5) << f;
+      EXPECT_LT(std::abs(std::arg(full.gain[0] / H)) / units::degree, 3.0) << f;
+      EXPECT_LT(std::abs(std::log(std::abs(half.gain[0] / H))), std::abs(std::log(std::abs(full.gain[0] / H))) + 1e-3)
+        << f;
+      EXPECT_FALSE(full.beyond_lap);
+    }
+}
+
+TEST(Dynamics, AFlapperDrivenOntoANozzleSaturatesAndSaysSo)
+{
+  // 6 times rated at 10 Hz drives the flapper onto the nozzles (x_f = x0 takes about 67 mA):
+  // allowed, the contact holds it, and the response says so; the gap never goes negative beyond the
+  // contact's give (force/K_c, well under a micrometre)
+  const Valve wide({"Sweeps/Motor currents=-0.14, -0.1, -0.05, -0.02, 0, 0.02, 0.05, 0.1, 0.14"});
+  const auto d = wide.dynamics(40);
+  const OperatingPoint point = wide.model.solve(d.equations(), bias);
+  const Linearisation l = linearise(d, point.state(), bias);
+  const auto s = sine_response(d, l, point.state(), bias, 10, 6 * rated, wide.description.dynamics);
+  EXPECT_TRUE(s.flapper_contact);
+  EXPECT_GT(s.maximum[2], 40e-6);
+  EXPECT_LT(s.maximum[2], 41e-6);
+  EXPECT_GT(s.minimum[2], -41e-6);
+  EXPECT_TRUE(std::isfinite(s.distortion));
+  EXPECT_GT(s.distortion, 0.05); // clipped
+}
+
+TEST(Dynamics, VoltageDriveAddsTheCoil)
+{
+  // 1.20: L_c di/dt = u - R_c(T) i - k_e dtheta/dt. With the armature held the coil's pole is
+  // -R_c(T)/L_c; at steady state i = u/R_c(T) = R_c(T0)/R_c(T) i_command.
+  const Valve voltage({"Torque motor/Coil drive=voltage"});
+  for (double T : {40.0, 120.0})
+    {
+      const auto held = voltage.dynamics(T, HeldParts{true, true, true});
+      ASSERT_EQ(held.size(), 8u);
+      const double R = laws::coil_resistance(voltage.description.torque_motor, T), L = 0.041;
+      const OperatingPoint null = voltage.model.solve(held.equations(), 0.0);
+      const Linearisation l = linearise(held, null.state(), 0.0);
+      EXPECT_LT(relative(l.A(7, 7), -R / L), 1e-6) << T;
+      const double R0 = laws::coil_resistance(voltage.description.torque_motor, 40);
+      EXPECT_LT(relative(held.steady_current(rated), rated * R0 / R), 1e-12) << T;
+    }
+  // the static point is the dynamic one at zero rates with the coil too
+  const auto d = voltage.dynamics(80);
+  const OperatingPoint op = voltage.model.solve(d.equations(), d.steady_current(bias));
+  EXPECT_LT(scaled_rates(d, op.state(), bias), 1e-9);
+}
+
+TEST(Dynamics, FailedIntegrationNamesTemperatureAndTime)
+{
+  // a torque table that does not reach the nozzles, and a step that drives the armature past it
+  const Valve narrow({"Sweeps/Motor angles=-0.15, -0.1, -0.05, 0, 0.05, 0.1, 0.15"});
+  const auto d = narrow.dynamics(60);
+  try
+    {
+      step_response(narrow.model, d, 0.0, rated, narrow.description.dynamics, 50);
+      FAIL() << "the armature passes 0.15 deg in this step";
+    }
+  catch (const std::runtime_error &e)
+    {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("at 60 degC"), std::string::npos) << m;
+      EXPECT_NE(m.find("t = "), std::string::npos) << m;
+      EXPECT_NE(m.find("Sweeps/Motor angles"), std::string::npos) << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
+  // CVODE's own failure (too few steps allowed) likewise
+  auto p = narrow.description.dynamics;
+  p.maximum_steps = 100;
+  try
+    {
+      step_response(rv1().model, rv1().dynamics(60), 0.0, rated, p, 50);
+      FAIL();
+    }
+  catch (const std::runtime_error &e)
+    {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("at 60 degC, t = "), std::string::npos) << m;
+      EXPECT_NE(m.find("CV_TOO_MUCH_WORK"), std::string::npos) << m;
+      EXPECT_NE(m.find("Maximum steps"), std::string::npos) << m;
+    }
+}
