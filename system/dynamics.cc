@@ -6,10 +6,16 @@
 
 #include <boost/serialization/utility.hpp>
 
+#include <algorithm>
 #include <utility>
 
 namespace servodrift::system
 {
+  bool TemperatureDynamics::stable() const
+  {
+    return std::none_of(modes.begin(), modes.end(), [](const Mode &m) { return m.eigenvalue.real() > 0; });
+  }
+
   double amplifier_resistance(const ValveDescription &valve)
   {
     return laws::coil_resistance(valve.torque_motor, valve.operating.reference_temperature);
@@ -41,11 +47,16 @@ namespace servodrift::system
       return d;
     }
 
-    /// A temperature's sine responses at one frequency: the linearity check and the study.
-    std::pair<SineCheck, std::vector<SineResponse>> sines(const ValveModel &model, const ValveDynamics &dynamics,
-                                                           const OperatingPoint &point, const Linearisation &l,
-                                                           double bias, double f)
+    using Sines = std::optional<std::pair<SineCheck, std::vector<SineResponse>>>;
+
+    /// A temperature's sine responses at one frequency: the linearity check and the study. None
+    /// where the bias point is unstable: the valve oscillates there by itself, there is no linear
+    /// response to check, and a forced response is the free oscillation's (the step shows it).
+    Sines sines(const ValveModel &model, const ValveDynamics &dynamics, const OperatingPoint &point,
+                const Linearisation &l, double bias, double f)
     {
+      if (slowest_decay_rate(l) <= 0)
+        return std::nullopt;
       const auto &p = model.description().dynamics;
       const double rated = model.description().operating.rated_current;
       SineCheck check;
@@ -61,7 +72,7 @@ namespace servodrift::system
       std::vector<SineResponse> study;
       for (double amplitude : p.sine_amplitudes)
         study.push_back(sine_response(dynamics, l, point.state(), bias, f, amplitude * rated, p));
-      return {check, study};
+      return std::make_pair(check, study);
     }
   } // namespace
 
@@ -97,9 +108,11 @@ namespace servodrift::system
         TemperatureDynamics d = object_of<TemperatureDynamics>(rows[k]);
         for (std::size_t j = 0; j < n_f; ++j)
           {
-            auto [check, study] = object_of<std::pair<SineCheck, std::vector<SineResponse>>>(rows[n_T + k * n_f + j]);
-            d.sine_checks.push_back(std::move(check));
-            d.sine_study.push_back(std::move(study));
+            if (auto computed = object_of<Sines>(rows[n_T + k * n_f + j]))
+              {
+                d.sine_checks.push_back(std::move(computed->first));
+                d.sine_study.push_back(std::move(computed->second));
+              }
           }
         results.temperatures.push_back(std::move(d));
       }

@@ -43,14 +43,16 @@ namespace servodrift::system
     SteadyStateCheck steady;
     StepResponse large_step; ///< 0 -> rated current
     StepResponse small_step; ///< bias -> bias + small step
-    std::vector<SineCheck> sine_checks;                ///< by `Dynamics/Sine frequencies'
-    std::vector<std::vector<SineResponse>> sine_study; ///< [frequency][amplitude]
+    std::vector<SineCheck> sine_checks;                ///< by `Dynamics/Sine frequencies'; none if unstable
+    std::vector<std::vector<SineResponse>> sine_study; ///< [frequency][amplitude]; none if unstable
+    /// every mode decays at the bias (else the sine responses are not computed)
+    bool stable() const;
   };
 
   struct DynamicsResults
   {
     std::vector<TemperatureDynamics> temperatures; ///< the drift temperatures
-    std::optional<FixedTimeStudy> fixed_time;      ///< model.md C9, when `Dynamics/Fixed-time study'
+    std::vector<FixedTimeStudy> fixed_time;        ///< model.md C9, when `Dynamics/Fixed-time study'
   };
 
   DynamicsResults compute_dynamics(const ValveModel &model, OutputParameters::Progress progress);

@@ -209,19 +209,20 @@ namespace servodrift::system
       write_file_atomically(dir + "/dynamics_summary.csv", doc.text());
     }
 
-    void fixed_time(const ValveDescription &valve, const FixedTimeStudy &s, const std::string &dir)
+    void fixed_time(const ValveDescription &valve, const std::vector<FixedTimeStudy> &studies, const std::string &dir)
     {
       CsvDocument doc = document(valve, "fixed_time_study",
-                                 "model.md C9: drift measures read at fixed times of the start-up from rest, theta_d = " +
-                                   format_number(s.deviation_angle / units::degree) +
-                                   " deg against 0; reading_time 'static' rows are the steady state");
-      doc.columns = {"reading_time[s]", "temperature[degC]", "spool_displacement_deviation[m]",
+                                 "model.md C9: drift measures read at fixed times of the start-up from rest, each "
+                                 "deviation angle against 0; reading_time 'static' rows are the steady state");
+      doc.columns = {"deviation_angle[deg]", "reading_time[s]", "temperature[degC]", "spool_displacement_deviation[m]",
                      "brake_pressure_deviation[Pa]"};
+      for (const FixedTimeStudy &s : studies)
       for (std::size_t j = 0; j <= s.reading_times.size(); ++j)
         for (std::size_t k = 0; k < s.temperatures.size(); ++k)
           {
             const bool steady = j == s.reading_times.size();
-            doc.rows.push_back({steady ? "static" : cell(s.reading_times[j]), cell(s.temperatures[k]),
+            doc.rows.push_back({cell(s.deviation_angle / units::degree), steady ? "static" : cell(s.reading_times[j]),
+                                cell(s.temperatures[k]),
                                 cell(steady ? s.static_displacement_deviation[k] : s.displacement_deviation[j][k]),
                                 cell(steady ? s.static_pressure_deviation[k] : s.pressure_deviation[j][k])});
           }
@@ -236,7 +237,7 @@ namespace servodrift::system
     step_responses(valve, r, dir);
     sine_responses(valve, r, dir);
     summary(valve, r, dir);
-    if (r.fixed_time)
-      fixed_time(valve, *r.fixed_time, dir);
+    if (!r.fixed_time.empty())
+      fixed_time(valve, r.fixed_time, dir);
   }
 } // namespace servodrift::system

@@ -117,8 +117,10 @@ namespace servodrift::system
       modes << "# " << name << "\n" << by_name[name].str() << "\n\n";
     write_file_atomically(dir + "/modes.dat", modes.str());
 
-    // the sine study at the temperature nearest T0: blocks by amplitude, the linear response last
+    // the sine study at the temperature nearest T0 (if stable there): blocks by amplitude, the linear
+    // response last
     const auto &d0 = r.temperatures[nearest(r, valve.operating.reference_temperature)];
+    const bool sine_plot = !d0.sine_checks.empty();
     std::ostringstream sine;
     sine << "# " << d0.temperature << " degC; blocks by amplitude, then linear; frequency[Hz] "
          << "brake_pressure_amplitude[dB re DC] brake_pressure_phase[deg]\n";
@@ -142,7 +144,8 @@ namespace servodrift::system
     for (std::size_t j = 0; j < d0.brake_pressure.frequencies.size(); ++j)
       sine << c(d0.brake_pressure.frequencies[j]) << ' ' << c(d0.brake_pressure.amplitude_db[j]) << ' '
            << c(d0.brake_pressure.phase_degrees[j]) << '\n';
-    write_file_atomically(dir + "/sine.dat", sine.str());
+    if (sine_plot)
+      write_file_atomically(dir + "/sine.dat", sine.str());
 
     const std::string temperature_titles = "titles = \"" + titles(r, selected) + "\"\n";
     const std::string n = std::to_string(selected.size() - 1);
@@ -167,6 +170,10 @@ namespace servodrift::system
                 "set ylabel 'natural frequency [Hz]'\n" + mode_plot(names, 2) +
                   "unset logscale y\nset xlabel 'temperature [degC]'\nset ylabel 'damping ratio [1]'\n" +
                   mode_plot(names, 3) + "unset multiplot\n"},
+    };
+    std::vector<Plot> all = plots;
+    if (sine_plot)
+      all.push_back(
       {"sine_amplitude_study",
        "titles = \"" + sine_titles + "\"\nset multiplot layout 2,1 title 'Brake pressure, nonlinear first harmonic at " +
          c(d0.temperature) + " degC'\nset logscale x\nset grid\nset key outside right\nset ylabel 'amplitude [dB re DC]'\n"
@@ -176,7 +183,7 @@ namespace servodrift::system
          "set xlabel 'frequency [Hz]'\nset ylabel 'phase [deg]'\n"
          "plot 'sine.dat' index " + std::to_string(valve.dynamics.sine_amplitudes.size()) +
          " using 1:3 with lines lc 'black' title 'linear', for [k=0:" + std::to_string(valve.dynamics.sine_amplitudes.size() - 1) +
-         "] 'sine.dat' index k using 1:3 with linespoints title word(titles,k+1)\nunset multiplot\n"}};
-    render_plots(valve, plots, dir, files);
+         "] 'sine.dat' index k using 1:3 with linespoints title word(titles,k+1)\nunset multiplot\n"});
+    render_plots(valve, all, dir, files);
   }
 } // namespace servodrift::system

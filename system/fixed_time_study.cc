@@ -7,6 +7,7 @@
 #include "system/valve_dynamics.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -24,23 +25,23 @@ namespace servodrift::system
     return (*d50 - *d40) / (*d120 - *d110);
   }
 
-  FixedTimeStudy fixed_time_study(const ValveModel &model, double amplifier, OutputParameters::Progress progress)
+  std::vector<FixedTimeStudy> fixed_time_study(const ValveModel &model, double amplifier,
+                                               OutputParameters::Progress progress)
   {
     const ValveDescription &valve = model.description();
     const auto &p = valve.dynamics;
-    FixedTimeStudy study;
-    study.temperatures = valve.sweeps.drift_temperatures;
-    study.reading_times = p.reading_times;
-    study.deviation_angle = valve.sweeps.deviation_angles.back();
+    const std::vector<double> &temperatures = valve.sweeps.drift_temperatures;
+    std::vector<double> angles = {0.0};
+    angles.insert(angles.end(), p.fixed_time_deviation_angles.begin(), p.fixed_time_deviation_angles.end());
     const double rated = valve.operating.rated_current;
-    const std::size_t n_T = study.temperatures.size(), n_t = study.reading_times.size();
+    const std::size_t n_T = temperatures.size(), n_t = p.reading_times.size(), n_a = angles.size();
+    const std::array<double, 2> currents = {0.0, rated};
 
-    // case (T, deviation, current): x_v and p_B at the reading times, then at the static point
-    const std::array<double, 2> angles = {0.0, study.deviation_angle}, currents = {0.0, rated};
+    // case (T, deviation, current): x_v (i = 0) or p_B (rated) at the reading times, then at the static point
     const auto rows = run_sweep(
-      "dynamics: fixed-time readings", n_T * 4,
+      "dynamics: fixed-time readings", n_T * n_a * 2,
       [&](std::size_t c) {
-        const double T = study.temperatures[c / 4], angle = angles[(c / 2) % 2], command = currents[c % 2];
+        const double T = temperatures[c / (2 * n_a)], angle = angles[(c / 2) % n_a], command = currents[c % 2];
         const ValveDynamics dynamics(model.equations(T, model.offsets_for_deviation(angle)), amplifier, rated);
         const OperatingPoint end = model.solve(dynamics.equations(), dynamics.steady_current(command));
         const auto integrator =
@@ -50,7 +51,7 @@ namespace servodrift::system
                               dynamics.vector_of(end.state()));
         integrator->start(0.0, dynamics.vector_of(rest_state(dynamics.equations())));
         std::vector<double> row;
-        for (double t : study.reading_times)
+        for (double t : p.reading_times)
           {
             const auto &y = integrator->advance_to(t);
             row.push_back(command == 0 ? y[4] : y[6]);
@@ -59,40 +60,56 @@ namespace servodrift::system
         return CaseRows{row};
       },
       progress);
+    const auto at = [&](std::size_t T, std::size_t a, std::size_t i) -> const std::vector<double> & {
+      return rows[(T * n_a + a) * 2 + i];
+    };
 
-    study.displacement_deviation.assign(n_t, std::vector<double>(n_T));
-    study.pressure_deviation.assign(n_t, std::vector<double>(n_T));
-    study.static_displacement_deviation.resize(n_T);
-    study.static_pressure_deviation.resize(n_T);
-    for (std::size_t k = 0; k < n_T; ++k)
+    std::vector<FixedTimeStudy> studies;
+    for (std::size_t a = 1; a < n_a; ++a)
       {
-        const auto &x0 = rows[4 * k], &p0 = rows[4 * k + 1], &x1 = rows[4 * k + 2], &p1 = rows[4 * k + 3];
+        FixedTimeStudy study;
+        study.temperatures = temperatures;
+        study.reading_times = p.reading_times;
+        study.deviation_angle = angles[a];
+        study.displacement_deviation.assign(n_t, std::vector<double>(n_T));
+        study.pressure_deviation.assign(n_t, std::vector<double>(n_T));
+        study.static_displacement_deviation.resize(n_T);
+        study.static_pressure_deviation.resize(n_T);
+        for (std::size_t k = 0; k < n_T; ++k)
+          for (std::size_t j = 0; j <= n_t; ++j)
+            {
+              const double dx = at(k, a, 0)[j] - at(k, 0, 0)[j], dp = at(k, a, 1)[j] - at(k, 0, 1)[j];
+              if (j < n_t)
+                {
+                  study.displacement_deviation[j][k] = dx;
+                  study.pressure_deviation[j][k] = dp;
+                }
+              else
+                {
+                  study.static_displacement_deviation[k] = dx;
+                  study.static_pressure_deviation[k] = dp;
+                }
+            }
+        double best = std::numeric_limits<double>::infinity();
         for (std::size_t j = 0; j < n_t; ++j)
           {
-            study.displacement_deviation[j][k] = x1[j] - x0[j];
-            study.pressure_deviation[j][k] = p1[j] - p0[j];
+            const auto rx = slope_ratio(temperatures, study.displacement_deviation[j]);
+            const auto rp = slope_ratio(temperatures, study.pressure_deviation[j]);
+            study.displacement_slope_ratio.push_back(rx);
+            study.pressure_slope_ratio.push_back(rp);
+            if (rx && rp && *rx > 0 && *rp > 0)
+              if (const double miss = std::abs(std::log(*rx / paper_displacement_slope_ratio)) +
+                                      std::abs(std::log(*rp / paper_pressure_slope_ratio));
+                  miss < best)
+                {
+                  best = miss;
+                  study.best = j;
+                }
           }
-        study.static_displacement_deviation[k] = x1[n_t] - x0[n_t];
-        study.static_pressure_deviation[k] = p1[n_t] - p0[n_t];
+        study.static_displacement_slope_ratio = slope_ratio(temperatures, study.static_displacement_deviation);
+        study.static_pressure_slope_ratio = slope_ratio(temperatures, study.static_pressure_deviation);
+        studies.push_back(std::move(study));
       }
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < n_t; ++j)
-      {
-        const auto rx = slope_ratio(study.temperatures, study.displacement_deviation[j]);
-        const auto rp = slope_ratio(study.temperatures, study.pressure_deviation[j]);
-        study.displacement_slope_ratio.push_back(rx);
-        study.pressure_slope_ratio.push_back(rp);
-        if (rx && rp && *rx > 0 && *rp > 0)
-          if (const double miss = std::abs(std::log(*rx / paper_displacement_slope_ratio)) +
-                                  std::abs(std::log(*rp / paper_pressure_slope_ratio));
-              miss < best)
-            {
-              best = miss;
-              study.best = j;
-            }
-      }
-    study.static_displacement_slope_ratio = slope_ratio(study.temperatures, study.static_displacement_deviation);
-    study.static_pressure_slope_ratio = slope_ratio(study.temperatures, study.static_pressure_deviation);
-    return study;
+    return studies;
   }
 } // namespace servodrift::system

@@ -3,7 +3,7 @@
 // The leading hypothesis is that the paper read its dynamic model at a fixed simulation time, before
 // the steady state. At each drift temperature this integrates the start-up of the valve from rest
 // (supply switched on with every pressure at return, armature and spool centred) for theta_d = 0
-// and for the largest deviation angle, at i = 0 (spool displacement, the paper's Fig. 15) and at the
+// and for each deviation angle of the study, at i = 0 (spool displacement, the paper's Fig. 15) and at the
 // rated current (brake pressure, Fig. 16), reads the deviations (E40) at fixed times, and compares
 // their scale-free shape, the slope ratio (40-50 degC)/(110-120 degC) of D9, with the paper's 11.5 and
 // 10.4.
@@ -35,8 +35,9 @@ namespace servodrift::system
   /// The paper's slope ratios (D9): spool displacement 11.5, brake pressure 10.4.
   inline constexpr double paper_displacement_slope_ratio = 11.5, paper_pressure_slope_ratio = 10.4;
 
-  FixedTimeStudy fixed_time_study(const ValveModel &model, double amplifier_resistance,
-                                  OutputParameters::Progress progress);
+  /// One study per `Dynamics/Fixed-time deviation angles'.
+  std::vector<FixedTimeStudy> fixed_time_study(const ValveModel &model, double amplifier_resistance,
+                                               OutputParameters::Progress progress);
 
   /// (d(50) - d(40))/(d(120) - d(110)) of a series over the temperatures; empty if not defined.
   std::optional<double> slope_ratio(const std::vector<double> &temperatures, const std::vector<double> &values);

@@ -282,7 +282,7 @@ namespace servodrift::system
         << "- `system/stage_coefficients.csv`, `system/operating_points.csv`, `system/drift_map.csv`\n"
         << (r.dynamics ? "- `system/modes.csv`, `system/frequency_response.csv`, `system/step_response.csv`, "
                          "`system/step_metrics.csv`, `system/sine_response.csv`, `system/dynamics_summary.csv`" +
-                           std::string(r.dynamics->fixed_time ? ", `system/fixed_time_study.csv`" : "") + "\n" :
+                           std::string(r.dynamics->fixed_time.empty() ? "" : ", `system/fixed_time_study.csv`") + "\n" :
                          "")
         << "- `system/plots/`: images, their data (`.dat`) and gnuplot scripts (`.gp`)\n";
     write_file_atomically(path, out.str());

@@ -67,9 +67,13 @@ namespace servodrift
     prm.declare_entry("Fixed-time study", "false", Patterns::Bool(),
                       "model.md C9: integrate the start-up of the valve (supply switched on with every "
                       "pressure at return, armature and spool centred) at each drift temperature, with "
-                      "and without the largest deviation angle, and read the drift measures at fixed "
-                      "times (`Reading times'), to test whether the paper read its dynamic model before "
-                      "the steady state. [-]");
+                      "and without each of `Fixed-time deviation angles', and read the drift measures at "
+                      "fixed times (`Reading times'), to test whether the paper read its dynamic model "
+                      "before the steady state. [-]");
+    prm.declare_entry("Fixed-time deviation angles", "0.0003, 1", double_list(-10, 10, 1),
+                      "Deviation angles theta_d of the fixed-time study, by the valve's `Offsets' "
+                      "convention: the paper's 1 deg, and 0.0003 deg, about the effective offset its "
+                      "small deviations imply (1.19, C9), where the valve is not saturated. [deg]");
     prm.declare_entry("Reading times", "1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1",
                       double_list(1e-9, 1e3, 1),
                       "Times after start-up at which the fixed-time study reads the drift measures, "
@@ -99,6 +103,9 @@ namespace servodrift
     maximum_steps = prm.get_integer("Maximum steps");
     fixed_time_study = prm.get_bool("Fixed-time study");
     reading_times = get_double_list(prm, "Reading times");
+    fixed_time_deviation_angles = get_double_list(prm, "Fixed-time deviation angles");
+    for (double &a : fixed_time_deviation_angles)
+      a *= 3.14159265358979323846 / 180;
     prm.leave_subsection();
   }
 } // namespace servodrift

@@ -28,6 +28,7 @@ namespace servodrift
     unsigned int maximum_steps;         ///< CVODE steps per output interval [1]
     bool fixed_time_study;              ///< model.md C9: read the start-up transient at fixed times
     std::vector<double> reading_times;  ///< times of the fixed-time readings [s]
+    std::vector<double> fixed_time_deviation_angles; ///< theta_d of the fixed-time study [rad] (declared in degree)
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(dealii::ParameterHandler &prm);
