@@ -47,6 +47,13 @@ namespace servodrift::system
         {
           (*c->rhs)(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
         }
+      catch (const TableRangeError &)
+        {
+          // recoverable: a trial step past a contact may query beyond a table where the solution
+          // does not go; CVODE retries with a smaller step, and fails only if the solution goes there
+          c->error = std::current_exception();
+          return 1;
+        }
       catch (...)
         {
           c->error = std::current_exception();
@@ -190,6 +197,7 @@ namespace servodrift::system
     flag = CVode(c.memory, t_limit, c.y, &t, CV_ONE_STEP);
     if (flag < 0)
       fail(flag, "CVode");
+    c.error = nullptr; // a recovered trial step's error is no longer news
     t_now = t;
     const double *y = N_VGetArrayPointer(c.y);
     y_now.assign(y, y + y_now.size());
