@@ -154,8 +154,8 @@ namespace servodrift::system
   {
     // Laminar leakage across the land, pi d_v c_r^3 dp/(12 mu L), over the leak length L = -opening
     // while overlapped, floored so that it stays finite at and past the edge (E36, C14). The floor
-    // is a smooth maximum, L_min + L_min ln(1 + exp((L - L_min)/L_min)): a corner there would cost the
-    // time integration a step failure at every crossing of the lap edge.
+    // is a smooth maximum, L_min + L_min ln(1 + exp((L - L_min)/L_min)), so that the right-hand side
+    // stays smooth through the lap edge, which the spool crosses in most large-signal responses.
     const double excess = (-opening - minimum_leak_length) / minimum_leak_length;
     const double leak_length =
       minimum_leak_length * (1 + (excess > 30 ? excess : std::log1p(std::exp(excess))));
