@@ -2,6 +2,7 @@
 // reduced-order tables of RV-1, and the whole system stage without plots. Not a test: it prints
 // wall times (minimum and median of several repetitions).
 //   build/bench/bench_drift_map [repetitions]
+#include "bench/time_it.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
 #include "flow/pilot_stage.h"
@@ -20,22 +21,7 @@
 
 using namespace servodrift;
 
-namespace
-{
-  template <typename F>
-  std::pair<double, double> time_it(int repetitions, F &&f)
-  {
-    std::vector<double> t;
-    for (int k = 0; k < repetitions; ++k)
-      {
-        const auto start = std::chrono::steady_clock::now();
-        f();
-        t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-      }
-    std::sort(t.begin(), t.end());
-    return {t.front(), t[t.size() / 2]};
-  }
-} // namespace
+using servodrift::bench::time_it;
 
 int main(int argc, char **argv)
 {

@@ -7,6 +7,7 @@
 //   4. the whole dynamics stage (every analysis of `servodrift run'), for the record.
 // Not a test: it prints wall times (minimum and median of the repetitions).
 //   build/bench/bench_dynamics [repetitions]          (or under mpirun -np 2)
+#include "bench/time_it.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
 #include "flow/pilot_stage.h"
@@ -25,22 +26,7 @@
 using namespace servodrift;
 using namespace servodrift::system;
 
-namespace
-{
-  template <typename F>
-  std::pair<double, double> time_it(int repetitions, F &&f)
-  {
-    std::vector<double> t;
-    for (int k = 0; k < repetitions; ++k)
-      {
-        const auto start = std::chrono::steady_clock::now();
-        f();
-        t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-      }
-    std::sort(t.begin(), t.end());
-    return {t.front(), t[t.size() / 2]};
-  }
-} // namespace
+using servodrift::bench::time_it;
 
 int main(int argc, char **argv)
 {
