@@ -7,10 +7,19 @@
 #include <boost/serialization/utility.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace servodrift::system
 {
+  bool sweeps_differ(const SineResponse &up, const SineResponse &down)
+  {
+    if (!up.periodic || !down.periodic) // an unsettled response proves nothing
+      return false;
+    const auto h = up.gain[0] / down.gain[0];
+    return std::abs(20 * std::log10(std::abs(h))) > 1 || std::abs(std::arg(h)) > 10 * 3.14159265358979323846 / 180;
+  }
+
   bool TemperatureDynamics::stable() const
   {
     return std::none_of(modes.begin(), modes.end(), [](const Mode &m) { return m.eigenvalue.real() > 0; });
@@ -47,32 +56,51 @@ namespace servodrift::system
       return d;
     }
 
-    using Sines = std::optional<std::pair<SineCheck, std::vector<SineResponse>>>;
-
-    /// A temperature's sine responses at one frequency: the linearity check and the study. None
-    /// where the bias point is unstable: the valve oscillates there by itself, there is no linear
-    /// response to check, and a forced response is the free oscillation's (the step shows it).
-    Sines sines(const ValveModel &model, const ValveDynamics &dynamics, const OperatingPoint &point,
-                const Linearisation &l, double bias, double f)
+    /// A temperature's linearity check at one frequency. None where the bias point is unstable: the
+    /// valve oscillates there by itself, there is no linear response to check, and a forced response
+    /// is the free oscillation's (the step responses show it).
+    std::optional<SineCheck> check(const ValveModel &model, const ValveDynamics &dynamics, const OperatingPoint &point,
+                                   const Linearisation &l, double bias, double f)
     {
       if (slowest_decay_rate(l) <= 0)
         return std::nullopt;
       const auto &p = model.description().dynamics;
       const double rated = model.description().operating.rated_current;
-      SineCheck check;
-      check.frequency = f;
+      SineCheck c;
+      c.frequency = f;
       for (std::size_t k = 0; k < 3; ++k)
         {
-          check.linear[k] = transfer(l, sine_outputs[k], f);
-          check.dc_gain[k] = transfer(l, sine_outputs[k], 0.0);
+          c.linear[k] = transfer(l, sine_outputs[k], f);
+          c.dc_gain[k] = transfer(l, sine_outputs[k], 0.0);
         }
       const double a = linear_amplitude(dynamics, l, point.state(), f, p.sine_check_amplitude * rated, p.linearity_margin);
-      check.at_amplitude = sine_response(dynamics, l, point.state(), bias, f, a, p);
-      check.at_half = sine_response(dynamics, l, point.state(), bias, f, a / 2, p);
-      std::vector<SineResponse> study;
-      for (double amplitude : p.sine_amplitudes)
-        study.push_back(sine_response(dynamics, l, point.state(), bias, f, amplitude * rated, p));
-      return std::make_pair(check, study);
+      c.at_amplitude = sine_response(dynamics, l, point.state(), bias, f, a, p);
+      c.at_half = sine_response(dynamics, l, point.state(), bias, f, a / 2, p);
+      return c;
+    }
+
+    /// The large-signal study at one amplitude: the sine frequencies swept up, each starting from the
+    /// periodic state of the one below, then down likewise; by ascending frequency both.
+    using Sweeps = std::optional<std::pair<std::vector<SineResponse>, std::vector<SineResponse>>>;
+    Sweeps sweeps(const ValveModel &model, const ValveDynamics &dynamics, const OperatingPoint &point,
+                  const Linearisation &l, double bias, double amplitude)
+    {
+      if (slowest_decay_rate(l) <= 0)
+        return std::nullopt;
+      const auto &p = model.description().dynamics;
+      const std::size_t n = p.sine_frequencies.size();
+      const auto sweep = [&](bool up) {
+        std::vector<SineResponse> responses(n);
+        const std::vector<double> *start = nullptr;
+        for (std::size_t j = 0; j < n; ++j)
+          {
+            const std::size_t k = up ? j : n - 1 - j;
+            responses[k] = sine_response(dynamics, l, point.state(), bias, p.sine_frequencies[k], amplitude, p, start);
+            start = responses[k].periodic ? &responses[k].final_state : nullptr;
+          }
+        return responses;
+      };
+      return std::make_pair(sweep(true), sweep(false));
     }
   } // namespace
 
@@ -87,18 +115,21 @@ namespace servodrift::system
     const Offsets offsets = model.offsets_for_deviation(0.0);
     const double bias = p.bias * rated;
 
-    // cases: first each temperature's linear analyses and steps (the costliest), then each
-    // temperature and sine frequency
+    // cases: first each temperature's linear analyses and steps, then each temperature's sweeps at
+    // each study amplitude (the costliest first), then each temperature and frequency's check
+    const std::size_t n_a = p.sine_amplitudes.size();
     const CaseRows rows = run_sweep(
-      "dynamics", n_T * (1 + n_f),
+      "dynamics", n_T * (1 + n_a + n_f),
       [&](std::size_t c) {
-        const double T = temperatures[c < n_T ? c : (c - n_T) / n_f];
-        const ValveDynamics dynamics(model.equations(T, offsets), amplifier, rated);
+        const std::size_t k = c < n_T ? c : c < n_T * (1 + n_a) ? (c - n_T) / n_a : (c - n_T * (1 + n_a)) / n_f;
+        const ValveDynamics dynamics(model.equations(temperatures[k], offsets), amplifier, rated);
         const OperatingPoint point = model.solve(dynamics.equations(), dynamics.steady_current(bias));
         const Linearisation l = linearise(dynamics, point.state(), bias);
         if (c < n_T)
           return CaseRows{row_of(linear_and_steps(model, dynamics, point, l, bias))};
-        return CaseRows{row_of(sines(model, dynamics, point, l, bias, p.sine_frequencies[(c - n_T) % n_f]))};
+        if (c < n_T * (1 + n_a))
+          return CaseRows{row_of(sweeps(model, dynamics, point, l, bias, p.sine_amplitudes[(c - n_T) % n_a] * rated))};
+        return CaseRows{row_of(check(model, dynamics, point, l, bias, p.sine_frequencies[(c - n_T * (1 + n_a)) % n_f]))};
       },
       progress);
 
@@ -106,14 +137,21 @@ namespace servodrift::system
     for (std::size_t k = 0; k < n_T; ++k)
       {
         TemperatureDynamics d = object_of<TemperatureDynamics>(rows[k]);
+        std::vector<Sweeps> study;
+        for (std::size_t a = 0; a < n_a; ++a)
+          study.push_back(object_of<Sweeps>(rows[n_T + k * n_a + a]));
         for (std::size_t j = 0; j < n_f; ++j)
-          {
-            if (auto computed = object_of<Sines>(rows[n_T + k * n_f + j]))
-              {
-                d.sine_checks.push_back(std::move(computed->first));
-                d.sine_study.push_back(std::move(computed->second));
-              }
-          }
+          if (auto c = object_of<std::optional<SineCheck>>(rows[n_T * (1 + n_a) + k * n_f + j]))
+            {
+              d.sine_checks.push_back(std::move(*c));
+              d.sine_study.emplace_back();
+              d.sine_study_down.emplace_back();
+              for (const auto &s : study) // stable at the bias, so each sweep exists
+                {
+                  d.sine_study.back().push_back(s->first[j]);
+                  d.sine_study_down.back().push_back(s->second[j]);
+                }
+            }
         results.temperatures.push_back(std::move(d));
       }
     if (p.fixed_time_study)

@@ -44,7 +44,10 @@ namespace servodrift::system
     StepResponse large_step; ///< 0 -> rated current
     StepResponse small_step; ///< bias -> bias + small step
     std::vector<SineCheck> sine_checks;                ///< by `Dynamics/Sine frequencies'; none if unstable
-    std::vector<std::vector<SineResponse>> sine_study; ///< [frequency][amplitude]; none if unstable
+    /// the large-signal study, [frequency][amplitude]: frequencies swept up, each starting from the
+    /// periodic state of the one below, and down likewise (none if unstable). Where the two differ
+    /// the valve has two periodic responses at one frequency, and a sweep jumps between them.
+    std::vector<std::vector<SineResponse>> sine_study, sine_study_down;
     /// every mode decays at the bias (else the sine responses are not computed)
     bool stable() const;
   };
@@ -56,6 +59,11 @@ namespace servodrift::system
   };
 
   DynamicsResults compute_dynamics(const ValveModel &model, OutputParameters::Progress progress);
+
+  /// Up and down sweeps differ at this frequency and amplitude: both periodic, and their first
+  /// harmonics of p_B more than 1 dB or 10 degrees apart: two periodic responses at one frequency,
+  /// between which a sweep jumps (issue 23).
+  bool sweeps_differ(const SineResponse &up, const SineResponse &down);
 
   /// The armature's amplifier: u = R_c(T0) i_command under voltage drive [Ohm].
   double amplifier_resistance(const ValveDescription &valve);

@@ -138,8 +138,10 @@ namespace servodrift::system
     {
       CsvDocument doc = document(valve, "sine_response",
                                  "nonlinear sine responses about the bias: check = the small-signal amplitude, "
-                                 "check-half = half of it, study = `Dynamics/Sine amplitudes'; first harmonics over "
-                                 "the input's, amplitude in dB relative to the linear DC gain of each output");
+                                 "check-half = half of it, study-up and study-down = `Dynamics/Sine amplitudes' with "
+                                 "the frequencies swept up and down, each starting from its neighbour's periodic "
+                                 "state; first harmonics over the input's, amplitude in dB relative to the linear DC "
+                                 "gain of each output");
       doc.columns = {"temperature[degC]", "frequency[Hz]", "kind[-]", "amplitude_of_rated[1]", "amplitude[A]",
                      "brake_pressure_amplitude[dB]", "brake_pressure_phase[deg]", "linear_brake_pressure_amplitude[dB]",
                      "linear_brake_pressure_phase[deg]", "spool_displacement_amplitude[dB]",
@@ -168,7 +170,9 @@ namespace servodrift::system
               row("check", c.at_amplitude);
               row("check-half", c.at_half);
               for (const SineResponse &s : d.sine_study[j])
-                row("study", s);
+                row("study-up", s);
+              for (const SineResponse &s : d.sine_study_down[j])
+                row("study-down", s);
             }
         }
       write_file_atomically(dir + "/sine_response.csv", doc.text());

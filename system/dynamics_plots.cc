@@ -125,21 +125,24 @@ namespace servodrift::system
     sine << "# " << d0.temperature << " degC; blocks by amplitude, then linear; frequency[Hz] "
          << "brake_pressure_amplitude[dB re DC] brake_pressure_phase[deg]\n";
     std::string sine_titles;
-    for (std::size_t a = 0; a < valve.dynamics.sine_amplitudes.size(); ++a)
-      {
-        sine << "# amplitude " << valve.dynamics.sine_amplitudes[a] << " of rated\n";
-        for (std::size_t j = 0; j < d0.sine_checks.size(); ++j)
-          {
-            // the phase continuous like the linear one's: the linear phase there plus the difference
-            const auto &check = d0.sine_checks[j];
-            const auto g = d0.sine_study[j][a].gain[0] / check.dc_gain[0];
-            const double linear = linear_phase(d0.brake_pressure, check.frequency, check.linear[0]);
-            sine << c(check.frequency) << ' ' << c(decibel(g)) << ' '
-                 << c(linear + degrees(d0.sine_study[j][a].gain[0] / check.linear[0])) << '\n';
-          }
-        sine << "\n\n";
-        sine_titles += (sine_titles.empty() ? "'" : " '") + c(100 * valve.dynamics.sine_amplitudes[a]) + " %'";
-      }
+    for (const auto *study : {&d0.sine_study, &d0.sine_study_down}) // blocks: up sweeps, then down
+      for (std::size_t a = 0; a < valve.dynamics.sine_amplitudes.size(); ++a)
+        {
+          sine << "# amplitude " << valve.dynamics.sine_amplitudes[a] << " of rated, swept "
+               << (study == &d0.sine_study ? "up" : "down") << "\n";
+          for (std::size_t j = 0; j < d0.sine_checks.size(); ++j)
+            {
+              // the phase continuous like the linear one's: the linear phase there plus the difference
+              const auto &check = d0.sine_checks[j];
+              const auto &s = (*study)[j][a];
+              const double linear = linear_phase(d0.brake_pressure, check.frequency, check.linear[0]);
+              sine << c(check.frequency) << ' ' << c(decibel(s.gain[0] / check.dc_gain[0])) << ' '
+                   << c(linear + degrees(s.gain[0] / check.linear[0])) << '\n';
+            }
+          sine << "\n\n";
+          if (study == &d0.sine_study)
+            sine_titles += (sine_titles.empty() ? "'" : " '") + c(100 * valve.dynamics.sine_amplitudes[a]) + " %'";
+        }
     sine << "# linear\n";
     for (std::size_t j = 0; j < d0.brake_pressure.frequencies.size(); ++j)
       sine << c(d0.brake_pressure.frequencies[j]) << ' ' << c(d0.brake_pressure.amplitude_db[j]) << ' '
@@ -148,6 +151,7 @@ namespace servodrift::system
       write_file_atomically(dir + "/sine.dat", sine.str());
 
     const std::string temperature_titles = "titles = \"" + titles(r, selected) + "\"\n";
+    const std::size_t n_amplitudes = valve.dynamics.sine_amplitudes.size();
     const std::string n = std::to_string(selected.size() - 1);
     const std::vector<Plot> plots = {
       {"bode_brake_pressure",
@@ -177,13 +181,17 @@ namespace servodrift::system
       {"sine_amplitude_study",
        "titles = \"" + sine_titles + "\"\nset multiplot layout 2,1 title 'Brake pressure, nonlinear first harmonic at " +
          c(d0.temperature) + " degC'\nset logscale x\nset grid\nset key outside right\nset ylabel 'amplitude [dB re DC]'\n"
-         "plot 'sine.dat' index " + std::to_string(valve.dynamics.sine_amplitudes.size()) +
-         " using 1:2 with lines lc 'black' title 'linear', for [k=0:" + std::to_string(valve.dynamics.sine_amplitudes.size() - 1) +
-         "] 'sine.dat' index k using 1:2 with linespoints title word(titles,k+1)\n"
+         "plot 'sine.dat' index " + std::to_string(2 * n_amplitudes) +
+         " using 1:2 with lines lc 'black' title 'linear', for [k=0:" + std::to_string(n_amplitudes - 1) +
+         "] 'sine.dat' index k using 1:2 with linespoints lc k+1 title word(titles,k+1).' up', for [k=0:" +
+         std::to_string(n_amplitudes - 1) + "] 'sine.dat' index k+" + std::to_string(n_amplitudes) +
+         " using 1:2 with linespoints dt 2 lc k+1 title word(titles,k+1).' down'\n"
          "set xlabel 'frequency [Hz]'\nset ylabel 'phase [deg]'\n"
-         "plot 'sine.dat' index " + std::to_string(valve.dynamics.sine_amplitudes.size()) +
-         " using 1:3 with lines lc 'black' title 'linear', for [k=0:" + std::to_string(valve.dynamics.sine_amplitudes.size() - 1) +
-         "] 'sine.dat' index k using 1:3 with linespoints title word(titles,k+1)\nunset multiplot\n"});
+         "plot 'sine.dat' index " + std::to_string(2 * n_amplitudes) +
+         " using 1:3 with lines lc 'black' title 'linear', for [k=0:" + std::to_string(n_amplitudes - 1) +
+         "] 'sine.dat' index k using 1:3 with linespoints lc k+1 title word(titles,k+1).' up', for [k=0:" +
+         std::to_string(n_amplitudes - 1) + "] 'sine.dat' index k+" + std::to_string(n_amplitudes) +
+         " using 1:3 with linespoints dt 2 lc k+1 title word(titles,k+1).' down'\nunset multiplot\n"});
     render_plots(valve, all, dir, files);
   }
 } // namespace servodrift::system

@@ -104,35 +104,48 @@ namespace servodrift::system
     {
       const auto &p = valve.dynamics;
       out << "Large signals (`Dynamics/Sine amplitudes`, `system/sine_response.csv`): the first harmonic of p_B "
-             "against the linearisation, over all temperatures and sine frequencies:\n\n"
-          << "| amplitude [% of rated] | largest departure [dB] | at [Hz] | periodic | sub-harmonic responses | "
-             "metering edge opened | flapper on a nozzle | spool on a stop |\n|---|---|---|---|---|---|---|---|\n";
+             "against the linearisation, over all stable temperatures and sine frequencies, the frequencies swept "
+             "up and down (each starting from its neighbour's periodic state):\n\n"
+          << "| amplitude [% of rated] | largest departure of a periodic response [dB] | at [Hz] | periodic | sub-harmonic responses | "
+             "up and down sweeps differ (jump) | metering edge opened | flapper on a nozzle | spool on a stop |\n"
+             "|---|---|---|---|---|---|---|---|---|\n";
+      std::string jumps;
       for (std::size_t a = 0; a < p.sine_amplitudes.size(); ++a)
         {
           double worst = 0, at = 0;
-          std::size_t periodic = 0, sub = 0, lap = 0, contact = 0, stop = 0, n = 0;
+          std::size_t periodic = 0, sub = 0, differ = 0, lap = 0, contact = 0, stop = 0, n = 0;
           for (const auto &d : r.temperatures)
             for (std::size_t j = 0; j < d.sine_checks.size(); ++j)
               {
-                const SineResponse &s = d.sine_study[j][a];
-                const double departure = decibel(s.gain[0] / d.sine_checks[j].linear[0]);
-                if (std::abs(departure) > std::abs(worst))
-                  worst = departure, at = s.frequency;
-                ++n;
-                periodic += s.periodic;
-                sub += s.periodic && s.response_periods > 1;
-                lap += s.beyond_lap;
-                contact += s.flapper_contact;
-                stop += s.spool_on_stop;
+                for (const SineResponse *s : {&d.sine_study[j][a], &d.sine_study_down[j][a]})
+                  {
+                    const double departure = decibel(s->gain[0] / d.sine_checks[j].linear[0]);
+                    if (s->periodic && std::abs(departure) > std::abs(worst))
+                      worst = departure, at = s->frequency;
+                    ++n;
+                    periodic += s->periodic;
+                    sub += s->periodic && s->response_periods > 1;
+                    lap += s->beyond_lap;
+                    contact += s->flapper_contact;
+                    stop += s->spool_on_stop;
+                  }
+                if (sweeps_differ(d.sine_study[j][a], d.sine_study_down[j][a]))
+                  {
+                    ++differ;
+                    jumps += (jumps.empty() ? "" : ", ") + fmt(100 * p.sine_amplitudes[a]) + " % at " +
+                             fmt(d.sine_checks[j].frequency) + " Hz, " + fmt(d.temperature) + " degC";
+                  }
               }
-          const auto of = [&](std::size_t k) { return std::to_string(k) + " of " + std::to_string(n); };
+          const auto of = [&](std::size_t k, std::size_t total) { return std::to_string(k) + " of " + std::to_string(total); };
           out << "| " << fmt(100 * p.sine_amplitudes[a]) << " | " << fmt(worst, 3) << " | " << fmt(at) << " | "
-              << of(periodic) << " | " << of(sub) << " | " << of(lap) << " | " << of(contact) << " | " << of(stop)
-              << " |\n";
+              << of(periodic, n) << " | " << of(sub, n) << " | " << of(differ, n / 2) << " | " << of(lap, n) << " | "
+              << of(contact, n) << " | " << of(stop, n) << " |\n";
         }
       out << "\nA sub-harmonic response repeats only after m > 1 input periods (`response_periods`); a metering "
              "edge opened means the spool left its lap, where the brake port's flow gain is that of the orifice, "
-             "not of the lap leakage.\n\n";
+             "not of the lap leakage. Up and down sweeps differ where both are periodic and their first harmonics "
+             "differ by more than 1 dB or 10 deg: two responses at one frequency, between which a sweep jumps"
+          << (jumps.empty() ? " (none here).\n\n" : ": " + jumps + ".\n\n");
     }
 
     void fixed_time(std::ostream &out, const FixedTimeStudy &s)

@@ -112,6 +112,6 @@ namespace boost::serialization
   void serialize(Archive &a, servodrift::system::TemperatureDynamics &d, unsigned int)
   {
     a &d.temperature &d.bias &d.bias_point &d.hydraulic_null &d.bias_spool_state &d.modes &d.brake_pressure &d.spool_displacement &
-      d.checks &d.steady &d.large_step &d.small_step &d.sine_checks &d.sine_study;
+      d.checks &d.steady &d.large_step &d.small_step &d.sine_checks &d.sine_study &d.sine_study_down;
   }
 } // namespace boost::serialization

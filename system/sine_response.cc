@@ -46,7 +46,12 @@ namespace servodrift::system
       Eigen::MatrixXd D(n, q - 1);
       for (std::size_t i = 1; i < q; ++i)
         D.col(i - 1) = U.col(i) - U.col(0);
-      const auto qr = D.colPivHouseholderQr();
+      // A slow mode's differences turn little from period to period (0.16 rad per period for RV-1's
+      // 50 Hz pressure loop at 2 kHz): nearly parallel columns, which Eigen's default threshold would
+      // call dependent; only true dependence is refused.
+      Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr;
+      qr.setThreshold(1e-13);
+      qr.compute(D);
       if (qr.rank() < static_cast<Eigen::Index>(q - 1))
         return std::nullopt;
       const Eigen::VectorXd c = qr.solve(-U.col(0));
@@ -87,7 +92,8 @@ namespace servodrift::system
   }
 
   SineResponse sine_response(const ValveDynamics &dynamics, const Linearisation &l, const ValveState &bias_point,
-                             double bias, double f, double a, const DynamicsParameters &p)
+                             double bias, double f, double a, const DynamicsParameters &p,
+                             const std::vector<double> *start)
   {
     const ValveEquations &eq = dynamics.equations();
     SineResponse r;
@@ -97,8 +103,8 @@ namespace servodrift::system
     // Start on the linear periodic solution (for a sin(w t) = Im(a exp(j w t)), y = Im(a X exp(j w t)))
     // where it stays within half the distance to the edges; a larger amplitude starts at the bias
     // point, since its linear solution may lie beyond the nozzles.
-    std::vector<double> y0 = dynamics.vector_of(bias_point);
-    if (a <= linear_amplitude(dynamics, l, bias_point, f, a, 0.5))
+    std::vector<double> y0 = start ? *start : dynamics.vector_of(bias_point);
+    if (!start && a <= linear_amplitude(dynamics, l, bias_point, f, a, 0.5))
       {
         const Eigen::VectorXcd X = state_response(l, f);
         for (std::size_t k = 0; k < y0.size(); ++k)
@@ -129,10 +135,15 @@ namespace servodrift::system
     };
 
     bool restart = true;
-    while (restart && !r.periodic && r.periods < p.maximum_periods)
+    // at least `Maximum periods', and at least 4 time constants of the slowest mode: above the
+    // valve's bandwidth the pressure loop's transient outlasts many periods (150 at 2 kHz for RV-1)
+    const double slowest = slowest_decay_rate(l);
+    const unsigned int most_periods = static_cast<unsigned int>(
+      std::max<double>(p.maximum_periods, slowest > 0 ? std::min(1e6, std::ceil(4 / slowest / period)) : 0));
+    while (restart && !r.periodic && r.periods < most_periods)
       {
         restart = false;
-    integrator->integrate(p.maximum_periods * period, [&](double, double t) {
+    integrator->integrate(most_periods * period, [&](double, double t) {
       // samples j = 0 .. N-1 at (period_index + j/N)/f; the state at j = N, the period's end, is the
       // next period's boundary
       for (double ts; (ts = (double(period_index) + double(current.times.size()) / N) * period) <= t;)
@@ -155,12 +166,28 @@ namespace servodrift::system
           // Periodic with m periods: the state recurs after m periods, and did one period earlier.
           // A sub-harmonic (m > 1) also needs successive periods that clearly differ (ten times the
           // tolerance), or a transient that decays with an alternating sign would pass for one.
+          // Each output's samples must recur too, within the tolerance of that output's own range (at
+          // least 1e-4 of its scale: 2 kPa of p_B, 40 nm of x_v, 4 nm of x_f): a slow transient
+          // (RV-1's pressure loop decays over 150 periods at 2 kHz) can hide in the state's distance
+          // when the drive moves the flapper far more than it moves p_B.
           const double scale = motion(periods.back());
           const auto recurs = [&](std::size_t j, unsigned int m, double tolerance) {
             return dynamics.scaled_distance(boundaries[j], boundaries[j - m]) <= tolerance * scale;
           };
+          const auto outputs_recur = [&](unsigned int m) {
+            const Period &now = periods[k - 1], &then = periods[k - 1 - m];
+            for (std::size_t o = 0; o < 3; ++o)
+              {
+                const auto [lo, hi] = std::minmax_element(now.samples[o].begin(), now.samples[o].end());
+                const double range = std::max(*hi - *lo, 1e-4 * scales[o]);
+                for (std::size_t n = 0; n < N; ++n)
+                  if (std::abs(now.samples[o][n] - then.samples[o][n]) > p.periodic_tolerance * range)
+                    return false;
+              }
+            return true;
+          };
           for (unsigned int m = 1; m <= 32 && k >= segment_start + m + 1; ++m)
-            if (recurs(k, m, p.periodic_tolerance) && recurs(k - 1, m, p.periodic_tolerance) &&
+            if (recurs(k, m, p.periodic_tolerance) && recurs(k - 1, m, p.periodic_tolerance) && outputs_recur(m) &&
                 (m == 1 || (!recurs(k, 1, 10 * p.periodic_tolerance) && !recurs(k - 1, 1, 10 * p.periodic_tolerance))))
               {
                 r.periodic = true;
@@ -222,6 +249,7 @@ namespace servodrift::system
     r.beyond_lap = r.maximum[1] > x_ov || r.minimum[1] < -x_ov;
     r.spool_on_stop = r.maximum[1] > stroke || r.minimum[1] < -stroke;
     r.left_tables = eq.left_tables();
+    r.final_state = boundaries.back();
     return r;
   }
 } // namespace servodrift::system

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <complex>
+#include <vector>
 
 namespace servodrift::system
 {
@@ -36,13 +37,16 @@ namespace servodrift::system
     bool beyond_lap = false;      ///< the spool opened a metering edge in the last period
     bool spool_on_stop = false;   ///< the spool reached a stroke limit in the last period
     bool left_tables = false; ///< a pressure went beyond the flow tables (constant C_d)
+    std::vector<double> final_state; ///< the state at the last period's end (input phase 0); not archived
   };
 
   /// `bias_point' is the static operating point at the bias command `bias' [A], `linearisation' the
-  /// valve linearised there.
+  /// valve linearised there. `start', if given, is the state to start from at input phase 0 (a
+  /// neighbouring frequency's final_state, for a sweep); otherwise the linear periodic solution or,
+  /// for a large amplitude, the bias point.
   SineResponse sine_response(const ValveDynamics &dynamics, const Linearisation &linearisation,
                              const ValveState &bias_point, double bias, double frequency, double amplitude,
-                             const DynamicsParameters &parameters);
+                             const DynamicsParameters &parameters, const std::vector<double> *start = nullptr);
 
   /// The largest amplitude, up to `largest', whose linear response keeps the spool and the flapper
   /// within `margin' of the distance from the bias to their nearest edge (lap edges, stops, nozzles).

@@ -49,8 +49,9 @@ namespace servodrift
                       "Samples per period of a sine response from which its harmonics are computed. [1]");
     prm.declare_entry("Maximum periods", "40", Patterns::Integer(2, 100000),
                       "Periods a sine response may take to become periodic (its state recurs after one "
-                      "period, or after m <= 32 periods for a sub-harmonic, within `Periodic tolerance'); "
-                      "one that does not is reported as not periodic. [1]");
+                      "period, or after m <= 32 periods for a sub-harmonic, within `Periodic tolerance'), "
+                      "and at least 4 time constants of the valve's slowest mode; one that does not is "
+                      "reported as not periodic. [1]");
     prm.declare_entry("Periodic tolerance", "1e-3", Patterns::Double(1e-12, 1),
                       "Largest change of the state over one period (or m periods), in each state's scale, "
                       "relative to the motion of the outputs, of a periodic steady state; it bounds the "
