@@ -18,15 +18,6 @@ namespace servodrift::system
       return format_cell(v);
     }
 
-    /// gnuplot's `titles' word list of the plotted temperatures
-    std::string titles(const DynamicsResults &r, const std::vector<std::size_t> &selected)
-    {
-      std::string t;
-      for (std::size_t k : selected)
-        t += (t.empty() ? "'" : " '") + c(r.temperatures[k].temperature) + " degC'";
-      return t;
-    }
-
     /// "plot 'modes.dat' index 0 using 1:<column> ... title '<name>', ..." (names may hold spaces)
     std::string mode_plot(const std::vector<std::string> &names, int column)
     {
@@ -65,29 +56,30 @@ namespace servodrift::system
     if (!valve.output.plots || r.temperatures.empty())
       return;
     prepare_output_directory(dir);
-    const auto selected = representative_indices(r.temperatures.size());
+    // one curve per temperature, coloured by it (a colour bar), in the Bode and step plots
 
     // Bode plot of the brake pressure, blocks by temperature
     std::ostringstream bode;
     bode << "# blocks by temperature; frequency[Hz] brake_pressure_amplitude[dB] brake_pressure_phase[deg] "
-            "spool_displacement_amplitude[dB] spool_displacement_phase[deg]\n";
-    for (std::size_t k : selected)
+            "spool_displacement_amplitude[dB] spool_displacement_phase[deg] temperature[degC]\n";
+    for (std::size_t k = 0; k < r.temperatures.size(); ++k)
       {
         const auto &d = r.temperatures[k];
         bode << "# " << d.temperature << " degC\n";
         for (std::size_t j = 0; j < d.brake_pressure.frequencies.size(); ++j)
           bode << c(d.brake_pressure.frequencies[j]) << ' ' << c(d.brake_pressure.amplitude_db[j]) << ' '
                << c(d.brake_pressure.phase_degrees[j]) << ' ' << c(d.spool_displacement.amplitude_db[j]) << ' '
-               << c(d.spool_displacement.phase_degrees[j]) << '\n';
+               << c(d.spool_displacement.phase_degrees[j]) << ' ' << c(d.temperature) << '\n';
         bode << "\n\n";
       }
     write_file_atomically(dir + "/bode.dat", bode.str());
 
     // large step responses, blocks by temperature
     std::ostringstream step;
-    step << "# blocks by temperature; time[ms] brake_pressure[MPa] spool_displacement[um] flapper_displacement[um]\n";
+    step << "# blocks by temperature; time[ms] brake_pressure[MPa] spool_displacement[um] flapper_displacement[um] "
+            "temperature[degC]\n";
     double shown = 0; // time axis: past the slowest 2 % settling of p_B
-    for (std::size_t k : selected)
+    for (std::size_t k = 0; k < r.temperatures.size(); ++k)
       {
         const auto &d = r.temperatures[k];
         const auto &s = d.large_step;
@@ -96,7 +88,8 @@ namespace servodrift::system
         for (std::size_t j = 0; j < s.times.size(); ++j)
           step << c(1e3 * s.times[j]) << ' ' << c(1e-6 * s.states[j].brake_pressure) << ' '
                << c(1e6 * s.states[j].spool_displacement) << ' '
-               << c(1e6 * (valve.armature.pivot_to_nozzle_distance * s.states[j].angle - d.hydraulic_null)) << '\n';
+               << c(1e6 * (valve.armature.pivot_to_nozzle_distance * s.states[j].angle - d.hydraulic_null)) << ' '
+               << c(d.temperature) << '\n';
         step << "\n\n";
       }
     write_file_atomically(dir + "/step.dat", step.str());
@@ -150,26 +143,28 @@ namespace servodrift::system
     if (sine_plot)
       write_file_atomically(dir + "/sine.dat", sine.str());
 
-    const std::string temperature_titles = "titles = \"" + titles(r, selected) + "\"\n";
     const std::size_t n_amplitudes = valve.dynamics.sine_amplitudes.size();
-    const std::string n = std::to_string(selected.size() - 1);
+    const std::string n = std::to_string(r.temperatures.size() - 1);
+    const std::string palette = "set palette defined (0 'blue', 1 'green', 2 'orange', 3 'red')\nset cbrange [" +
+                                c(r.temperatures.front().temperature) + ":" + c(r.temperatures.back().temperature) +
+                                "]\nset cblabel 'temperature [degC]'\n";
     const std::vector<Plot> plots = {
       {"bode_brake_pressure",
-       temperature_titles + "set multiplot layout 2,1 title 'Brake pressure / command current, linearised at the bias'\n"
-                            "set logscale x\nset grid\nset key outside right\nset ylabel 'amplitude [dB re DC]'\n"
-                            "plot for [k=0:" + n + "] 'bode.dat' index k using 1:2 with lines lw 2 title word(titles,k+1)\n"
-                            "set xlabel 'frequency [Hz]'\nset ylabel 'phase [deg]'\n"
-                            "plot for [k=0:" + n + "] 'bode.dat' index k using 1:3 with lines lw 2 title word(titles,k+1)\n"
-                            "unset multiplot\n"},
+       palette + "set multiplot layout 2,1 title 'Brake pressure / command current, linearised at the bias'\n"
+                 "set logscale x\nset grid\nset ylabel 'amplitude [dB re DC]'\n"
+                 "plot for [k=0:" + n + "] 'bode.dat' index k using 1:2:6 with lines lw 1.5 lc palette notitle\n"
+                 "set xlabel 'frequency [Hz]'\nset ylabel 'phase [deg]'\n"
+                 "plot for [k=0:" + n + "] 'bode.dat' index k using 1:3:6 with lines lw 1.5 lc palette notitle\n"
+                 "unset multiplot\n"},
       {"step_response",
-       temperature_titles + "set multiplot layout 3,1 title 'Step 0 -> rated current'\nset grid\nset key outside right\n"
-                            "set xrange [0:" + c(1e3 * shown) + "]\nset ylabel 'p_B [MPa]'\n"
-                            "plot for [k=0:" + n + "] 'step.dat' index k using 1:2 with lines title word(titles,k+1)\n"
-                            "set ylabel 'x_v [um]'\n"
-                            "plot for [k=0:" + n + "] 'step.dat' index k using 1:3 with lines title word(titles,k+1)\n"
-                            "set xlabel 'time [ms]'\nset ylabel 'x_f [um]'\n"
-                            "plot for [k=0:" + n + "] 'step.dat' index k using 1:4 with lines title word(titles,k+1)\n"
-                            "unset multiplot\n"},
+       palette + "set multiplot layout 3,1 title 'Step 0 -> rated current'\nset grid\n"
+                 "set xrange [0:" + c(1e3 * shown) + "]\nset ylabel 'p_B [MPa]'\n"
+                 "plot for [k=0:" + n + "] 'step.dat' index k using 1:2:5 with lines lc palette notitle\n"
+                 "set ylabel 'x_v [um]'\n"
+                 "plot for [k=0:" + n + "] 'step.dat' index k using 1:3:5 with lines lc palette notitle\n"
+                 "set xlabel 'time [ms]'\nset ylabel 'x_f [um]'\n"
+                 "plot for [k=0:" + n + "] 'step.dat' index k using 1:4:5 with lines lc palette notitle\n"
+                 "unset multiplot\n"},
       {"modes", "set multiplot layout 2,1 title 'Modes at the bias'\nset grid\nset key outside right\nset logscale y\n"
                 "set ylabel 'natural frequency [Hz]'\n" + mode_plot(names, 2) +
                   "unset logscale y\nset xlabel 'temperature [degC]'\nset ylabel 'damping ratio [1]'\n" +

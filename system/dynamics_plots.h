@@ -1,7 +1,7 @@
 #pragma once
-// gnuplot plots of the dynamics (issue 23): the Bode plot of the brake pressure, the step responses
-// and the modes, a curve per temperature (up to five: the ends, the quartiles and the middle), and the
-// nonlinear sine study at the temperature nearest T0. Data (.dat) and scripts (.gp) in system/plots.
+// gnuplot plots of the dynamics (issue 23): the Bode plot of the brake pressure and the step
+// responses, a curve per temperature coloured by it, the modes vs temperature, and the nonlinear
+// sine study at the temperature nearest T0. Data (.dat) and scripts (.gp) in system/plots.
 #include "common/valve_description.h"
 #include "system/dynamics.h"
 #include "system/plots.h"

@@ -233,15 +233,19 @@ namespace servodrift::system
   TimeIntegrator::Statistics TimeIntegrator::statistics() const
   {
     Statistics s;
-    CVodeGetNumSteps(cvode->memory, &s.steps);
-    CVodeGetNumRhsEvals(cvode->memory, &s.rhs_evaluations);
-    CVodeGetNumJacEvals(cvode->memory, &s.jacobian_evaluations);
-    CVodeGetNumErrTestFails(cvode->memory, &s.error_test_failures);
-    CVodeGetNumNonlinSolvIters(cvode->memory, &s.nonlinear_iterations);
-    CVodeGetNumNonlinSolvConvFails(cvode->memory, &s.convergence_failures);
-    CVodeGetLastOrder(cvode->memory, &s.last_order);
     long difference_quotient_evaluations = 0;
-    CVodeGetNumLinRhsEvals(cvode->memory, &difference_quotient_evaluations);
+    void *m = cvode->memory;
+    for (const auto &[flag, call] :
+         {std::pair{CVodeGetNumSteps(m, &s.steps), "CVodeGetNumSteps"},
+          std::pair{CVodeGetNumRhsEvals(m, &s.rhs_evaluations), "CVodeGetNumRhsEvals"},
+          std::pair{CVodeGetNumJacEvals(m, &s.jacobian_evaluations), "CVodeGetNumJacEvals"},
+          std::pair{CVodeGetNumErrTestFails(m, &s.error_test_failures), "CVodeGetNumErrTestFails"},
+          std::pair{CVodeGetNumNonlinSolvIters(m, &s.nonlinear_iterations), "CVodeGetNumNonlinSolvIters"},
+          std::pair{CVodeGetNumNonlinSolvConvFails(m, &s.convergence_failures), "CVodeGetNumNonlinSolvConvFails"},
+          std::pair{CVodeGetLastOrder(m, &s.last_order), "CVodeGetLastOrder"},
+          std::pair{CVodeGetNumLinRhsEvals(m, &difference_quotient_evaluations), "CVodeGetNumLinRhsEvals"}})
+      if (flag != CV_SUCCESS)
+        fail(flag, call);
     s.rhs_evaluations += difference_quotient_evaluations;
     return s;
   }
