@@ -104,6 +104,20 @@ namespace servodrift::system
     }
   } // namespace
 
+  std::vector<std::size_t> study_indices(std::size_t n, std::size_t count)
+  {
+    if (count >= n)
+      count = n;
+    std::vector<std::size_t> indices;
+    for (std::size_t k = 0; k < count; ++k)
+      {
+        const std::size_t index = count == 1 ? 0 : (k * (n - 1) + (count - 1) / 2) / (count - 1); // rounded
+        if (indices.empty() || indices.back() != index)
+          indices.push_back(index);
+      }
+    return indices;
+  }
+
   DynamicsResults compute_dynamics(const ValveModel &model, OutputParameters::Progress progress)
   {
     const ValveDescription &valve = model.description();
@@ -115,21 +129,23 @@ namespace servodrift::system
     const Offsets offsets = model.offsets_for_deviation(0.0);
     const double bias = p.bias * rated;
 
-    // cases: first each temperature's linear analyses and steps, then each temperature's sweeps at
-    // each study amplitude (the costliest first), then each temperature and frequency's check
+    // cases: first each temperature's linear analyses and steps, then each study temperature's
+    // sweeps at each study amplitude (the costliest first), then each temperature and frequency's check
     const std::size_t n_a = p.sine_amplitudes.size();
+    const std::vector<std::size_t> studied = study_indices(n_T, p.large_signal_temperatures);
+    const std::size_t n_S = studied.size(), first_check = n_T + n_S * n_a;
     const CaseRows rows = run_sweep(
-      "dynamics", n_T * (1 + n_a + n_f),
+      "dynamics", first_check + n_T * n_f,
       [&](std::size_t c) {
-        const std::size_t k = c < n_T ? c : c < n_T * (1 + n_a) ? (c - n_T) / n_a : (c - n_T * (1 + n_a)) / n_f;
+        const std::size_t k = c < n_T ? c : c < first_check ? studied[(c - n_T) / n_a] : (c - first_check) / n_f;
         const ValveDynamics dynamics(model.equations(temperatures[k], offsets), amplifier, rated);
         const OperatingPoint point = model.solve(dynamics.equations(), dynamics.steady_current(bias));
         const Linearisation l = linearise(dynamics, point.state(), bias);
         if (c < n_T)
           return CaseRows{row_of(linear_and_steps(model, dynamics, point, l, bias))};
-        if (c < n_T * (1 + n_a))
+        if (c < first_check)
           return CaseRows{row_of(sweeps(model, dynamics, point, l, bias, p.sine_amplitudes[(c - n_T) % n_a] * rated))};
-        return CaseRows{row_of(check(model, dynamics, point, l, bias, p.sine_frequencies[(c - n_T * (1 + n_a)) % n_f]))};
+        return CaseRows{row_of(check(model, dynamics, point, l, bias, p.sine_frequencies[(c - first_check) % n_f]))};
       },
       progress);
 
@@ -137,19 +153,22 @@ namespace servodrift::system
     for (std::size_t k = 0; k < n_T; ++k)
       {
         TemperatureDynamics d = object_of<TemperatureDynamics>(rows[k]);
+        const auto s = std::find(studied.begin(), studied.end(), k);
         std::vector<Sweeps> study;
-        for (std::size_t a = 0; a < n_a; ++a)
-          study.push_back(object_of<Sweeps>(rows[n_T + k * n_a + a]));
+        for (std::size_t a = 0; s != studied.end() && a < n_a; ++a)
+          study.push_back(object_of<Sweeps>(rows[n_T + std::size_t(s - studied.begin()) * n_a + a]));
         for (std::size_t j = 0; j < n_f; ++j)
-          if (auto c = object_of<std::optional<SineCheck>>(rows[n_T * (1 + n_a) + k * n_f + j]))
+          if (auto c = object_of<std::optional<SineCheck>>(rows[first_check + k * n_f + j]))
             {
               d.sine_checks.push_back(std::move(*c));
+              if (study.empty())
+                continue;
               d.sine_study.emplace_back();
               d.sine_study_down.emplace_back();
-              for (const auto &s : study) // stable at the bias, so each sweep exists
+              for (const auto &sweep : study) // stable at the bias, so each sweep exists
                 {
-                  d.sine_study.back().push_back(s->first[j]);
-                  d.sine_study_down.back().push_back(s->second[j]);
+                  d.sine_study.back().push_back(sweep->first[j]);
+                  d.sine_study_down.back().push_back(sweep->second[j]);
                 }
             }
         results.temperatures.push_back(std::move(d));

@@ -47,7 +47,7 @@ namespace servodrift::system
     /// the large-signal study, [frequency][amplitude]: frequencies swept up, each starting from the
     /// periodic state of the one below, and down likewise (none if unstable). Where the two differ
     /// the valve has two periodic responses at one frequency, and a sweep jumps between them.
-    std::vector<std::vector<SineResponse>> sine_study, sine_study_down;
+    std::vector<std::vector<SineResponse>> sine_study, sine_study_down; ///< empty where not studied
     /// every mode decays at the bias (else the sine responses are not computed)
     bool stable() const;
   };
@@ -59,6 +59,10 @@ namespace servodrift::system
   };
 
   DynamicsResults compute_dynamics(const ValveModel &model, OutputParameters::Progress progress);
+
+  /// The indices of `count' of n temperatures, the ends and the others evenly spread (rounded);
+  /// all n if count >= n: where the large-signal study runs (`Dynamics/Large-signal temperatures').
+  std::vector<std::size_t> study_indices(std::size_t n, std::size_t count);
 
   /// Up and down sweeps differ at this frequency and amplitude: both periodic, and their first
   /// harmonics of p_B more than 1 dB or 10 degrees apart: two periodic responses at one frequency,

@@ -169,6 +169,8 @@ namespace servodrift::system
               };
               row("check", c.at_amplitude);
               row("check-half", c.at_half);
+              if (d.sine_study.empty()) // the study ran at other temperatures
+                continue;
               for (const SineResponse &s : d.sine_study[j])
                 row("study-up", s);
               for (const SineResponse &s : d.sine_study_down[j])

@@ -39,12 +39,15 @@ namespace servodrift::system
       return r.phase_degrees[k] + degrees(h / r.values[k]);
     }
 
-    /// the drift temperature nearest the reference temperature
-    std::size_t nearest(const DynamicsResults &r, double T0)
+    /// the studied drift temperature nearest the reference temperature (the first if none was)
+    std::size_t nearest_studied(const DynamicsResults &r, double T0)
     {
       std::size_t best = 0;
+      const auto distance = [&](std::size_t k) {
+        return r.temperatures[k].sine_study.empty() ? 1e300 : std::abs(r.temperatures[k].temperature - T0);
+      };
       for (std::size_t k = 1; k < r.temperatures.size(); ++k)
-        if (std::abs(r.temperatures[k].temperature - T0) < std::abs(r.temperatures[best].temperature - T0))
+        if (distance(k) < distance(best))
           best = k;
       return best;
     }
@@ -110,10 +113,10 @@ namespace servodrift::system
       modes << "# " << name << "\n" << by_name[name].str() << "\n\n";
     write_file_atomically(dir + "/modes.dat", modes.str());
 
-    // the sine study at the temperature nearest T0 (if stable there): blocks by amplitude, the linear
+    // the sine study at the studied temperature nearest T0 (if stable there): blocks by amplitude, the linear
     // response last
-    const auto &d0 = r.temperatures[nearest(r, valve.operating.reference_temperature)];
-    const bool sine_plot = !d0.sine_checks.empty();
+    const auto &d0 = r.temperatures[nearest_studied(r, valve.operating.reference_temperature)];
+    const bool sine_plot = !d0.sine_study.empty();
     std::ostringstream sine;
     sine << "# " << d0.temperature << " degC; blocks by amplitude, then linear; frequency[Hz] "
          << "brake_pressure_amplitude[dB re DC] brake_pressure_phase[deg]\n";
@@ -123,7 +126,7 @@ namespace servodrift::system
         {
           sine << "# amplitude " << valve.dynamics.sine_amplitudes[a] << " of rated, swept "
                << (study == &d0.sine_study ? "up" : "down") << "\n";
-          for (std::size_t j = 0; j < d0.sine_checks.size(); ++j)
+          for (std::size_t j = 0; j < study->size(); ++j)
             {
               // the phase continuous like the linear one's: the linear phase there plus the difference
               const auto &check = d0.sine_checks[j];

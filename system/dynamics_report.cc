@@ -104,8 +104,9 @@ namespace servodrift::system
     {
       const auto &p = valve.dynamics;
       out << "Large signals (`Dynamics/Sine amplitudes`, `system/sine_response.csv`): the first harmonic of p_B "
-             "against the linearisation, over all stable temperatures and sine frequencies, the frequencies swept "
-             "up and down (each starting from its neighbour's periodic state):\n\n"
+             "against the linearisation, over the stable ones of the study's temperatures (`Dynamics/Large-signal "
+             "temperatures`) and all sine frequencies, the frequencies swept up and down (each starting from its "
+             "neighbour's periodic state):\n\n"
           << "| amplitude [% of rated] | largest departure of a periodic response [dB] | at [Hz] | periodic | sub-harmonic responses | "
              "up and down sweeps differ (jump) | metering edge opened | flapper on a nozzle | spool on a stop |\n"
              "|---|---|---|---|---|---|---|---|---|\n";
@@ -115,7 +116,7 @@ namespace servodrift::system
           double worst = 0, at = 0;
           std::size_t periodic = 0, sub = 0, differ = 0, lap = 0, contact = 0, stop = 0, n = 0;
           for (const auto &d : r.temperatures)
-            for (std::size_t j = 0; j < d.sine_checks.size(); ++j)
+            for (std::size_t j = 0; j < d.sine_study.size(); ++j) // none where not studied
               {
                 for (const SineResponse *s : {&d.sine_study[j][a], &d.sine_study_down[j][a]})
                   {

@@ -45,6 +45,12 @@ namespace servodrift
                       "rated current, strictly increasing; bias +- amplitude must lie within `Sweeps/"
                       "Motor currents'. One that drives the flapper onto a nozzle is allowed: the "
                       "contact saturates it and the results say so. [1]");
+    prm.declare_entry("Large-signal temperatures", "5", Patterns::Integer(1, 100000),
+                      "How many drift temperatures the large-signal study (`Sine amplitudes', swept up and "
+                      "down) runs at: the two ends and the others evenly spread between them (all if "
+                      "there are fewer). The linear analyses, the steps and the sine check run at every "
+                      "drift temperature; the study is the dynamics' costliest part (doc/performance.md). "
+                      "[1]");
     prm.declare_entry("Samples per period", "64", Patterns::Integer(8, 100000),
                       "Samples per period of a sine response from which its harmonics are computed. [1]");
     prm.declare_entry("Maximum periods", "40", Patterns::Integer(2, 100000),
@@ -96,6 +102,7 @@ namespace servodrift
     sine_check_amplitude = prm.get_double("Sine check amplitude");
     linearity_margin = prm.get_double("Linearity margin");
     sine_amplitudes = get_double_list(prm, "Sine amplitudes");
+    large_signal_temperatures = static_cast<unsigned int>(prm.get_integer("Large-signal temperatures"));
     samples_per_period = prm.get_integer("Samples per period");
     maximum_periods = prm.get_integer("Maximum periods");
     periodic_tolerance = prm.get_double("Periodic tolerance");

@@ -404,3 +404,14 @@ TEST(Dynamics, FailedIntegrationNamesTemperatureAndTime)
       EXPECT_NE(m.find("Maximum steps"), std::string::npos) << m;
     }
 }
+
+TEST(Dynamics, LargeSignalStudyTemperaturesAreTheEndsAndEvenlySpread)
+{
+  using V = std::vector<std::size_t>;
+  EXPECT_EQ(system::study_indices(17, 5), (V{0, 4, 8, 12, 16}));
+  EXPECT_EQ(system::study_indices(9, 5), (V{0, 2, 4, 6, 8}));
+  EXPECT_EQ(system::study_indices(10, 4), (V{0, 3, 6, 9}));
+  EXPECT_EQ(system::study_indices(4, 1), (V{0}));
+  EXPECT_EQ(system::study_indices(3, 5), (V{0, 1, 2}));
+  EXPECT_EQ(system::study_indices(2, 2), (V{0, 1}));
+}
