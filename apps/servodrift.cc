@@ -1,5 +1,7 @@
 // servodrift: the command line. Subcommands only, no physics: each calls one module's run().
 #include "common/error.h"
+#include "common/output_files.h"
+#include "common/parameter_input.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
 #include "common/valve_description.h"
@@ -15,6 +17,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
@@ -32,11 +35,19 @@ namespace
     bool calibrate = false, convergence = false;
   };
 
+  /// --set takes one value per occurrence, so that the valve file may follow the options
+  void add_set_option(CLI::App *command, Options &o)
+  {
+    command->add_option("--set", o.overrides, "override one entry, \"Subsection/Key=value\" (repeatable)")
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->take_all();
+  }
+
   void add_common_options(CLI::App *command, Options &o)
   {
     command->add_option("input", o.input, "valve description (.prm or .json); default: the built-in RV-1");
-    command->add_option("--set", o.overrides, "override one entry, \"Subsection/Key=value\" (repeatable)")
-      ->take_all();
+    add_set_option(command, o);
     command->add_option("-o,--output", o.output, "output directory (overrides Output/Directory)");
   }
 
@@ -66,15 +77,84 @@ namespace
     say("  " + name + ": " + buffer);
   }
 
-  ValveDescription prepare(const Options &o, bool dynamics)
+  /// Before a run with a field-level stage (minutes of work): the whole chain on the reduced-order
+  /// models, in memory and over the same table ranges, so that a valve the system model cannot run
+  /// on such tables (an operating point beyond a table, a bridge without a null) is refused before
+  /// the first stage writes (issue 24). At the reduced order the run itself is as quick.
+  void check_before_field_stages(const ValveDescription &valve)
+  {
+    if (valve.torque_motor.model_level != "field" && valve.spring_tube.model_level != "field" &&
+        valve.pilot.model_level != "field")
+      return;
+    ValveDescription reduced = valve;
+    reduced.torque_motor.model_level = reduced.spring_tube.model_level = reduced.pilot.model_level = "reduced-order";
+    reduced.output.progress = OutputParameters::Progress::none;
+    auto &sw = reduced.sweeps;
+    if (valve.pilot.model_level == "field") // the field tables' ranges: their rows and the added zero rows
+      {
+        sw.gap_fractions = sw.field_gap_fractions;
+        sw.pressure_fractions = sw.field_orifice_pressure_fractions;
+        sw.pressure_fractions.insert(sw.pressure_fractions.end(), sw.field_nozzle_pressure_fractions.begin(),
+                                     sw.field_nozzle_pressure_fractions.end());
+        for (auto *list : {&sw.gap_fractions, &sw.pressure_fractions})
+          {
+            list->push_back(0);
+            std::sort(list->begin(), list->end());
+            list->erase(std::unique(list->begin(), list->end()), list->end());
+          }
+      }
+    try
+      {
+        system::StageTables tables;
+        tables.torque_motor = magnetics::compute_torque_motor_table(reduced);
+        tables.spring_tube = structure::compute_spring_tube_table(reduced);
+        auto pilot = flow::compute_pilot_tables(reduced);
+        tables.fixed_orifice = std::move(pilot.fixed_orifice);
+        tables.nozzle_flapper = std::move(pilot.nozzle_flapper);
+        system::check_operating_points(reduced, tables);
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError(std::string(e.what()) + " (found by the reduced-order models before the field stages ran)");
+      }
+  }
+
+  ValveDescription prepare(const Options &o, bool dynamics, bool whole_run)
   {
     say(producer_string("on " + std::to_string(mpi_size()) + (mpi_size() == 1 ? " rank" : " ranks")));
     ValveDescription valve = load(o);
     if (dynamics) // `servodrift dynamics' runs them whatever `Dynamics/Enabled' says
       validate_dynamics(valve);
+    if (whole_run)
+      {
+        validate_table_ranges(valve);
+        check_before_field_stages(valve);
+      }
     say("valve description: " + valve.source + ", output: " + valve.output.directory + "/");
-    write_parameters_file(valve); // creates the output directory, or stops every rank with the reason
     return valve;
+  }
+
+  /// Runs the stages of one subcommand as one OutputTransaction: if any fails, the output directory
+  /// is left as it was before the run (every rank undoes its own files, then rank 0 removes the
+  /// directories the run created).
+  template <typename Stages>
+  void transaction(const ValveDescription &valve, Stages &&stages)
+  {
+    OutputTransaction output(valve.output.directory);
+    try
+      {
+        stages();
+      }
+    catch (...)
+      {
+        output.roll_back();
+        mpi_barrier(); // errors are collective (run_sweep, on_rank_zero): every rank is here
+        if (mpi_rank() == 0)
+          output.remove_created_directories();
+        throw;
+      }
+    mpi_barrier();
+    output.commit();
   }
 
   int run_main(int argc, char **argv)
@@ -100,7 +180,7 @@ namespace
     magnetics->add_flag("--convergence", o.convergence,
                         "field model: mesh convergence and outer-boundary study at T0 (magnetics/*.csv)");
     params->add_option("input", o.input, "valve description (.prm or .json); default: the built-in RV-1");
-    params->add_option("--set", o.overrides, "override one entry, \"Subsection/Key=value\" (repeatable)")->take_all();
+    add_set_option(params, o);
     params->add_option("--format", o.format, "prm (default), json or markdown")
       ->check(CLI::IsMember({"prm", "json", "markdown"}));
 
@@ -113,7 +193,8 @@ namespace
         if (e.get_exit_code() == 0) // --help, --version
           return mpi_rank() == 0 ? app.exit(e) : 0;
         if (mpi_rank() == 0)
-          std::cerr << "servodrift: usage error: " << e.what() << " (see `servodrift --help')" << std::endl;
+          std::cerr << "servodrift: usage error: " << shown_input(e.what(), 300) << " (see `servodrift --help')"
+                    << std::endl;
         return 2;
       }
 
@@ -129,54 +210,53 @@ namespace
         return 0;
       }
 
-    const ValveDescription valve = prepare(o, dynamics->parsed());
-    if (run->parsed())
-      {
-        timed("magnetics (" + valve.torque_motor.model_level + ")", [&] { magnetics::run(valve); });
-        timed("structure (" + valve.spring_tube.model_level + ")", [&] { structure::run(valve); });
-        timed("flow (" + valve.pilot.model_level + ")", [&] { flow::run(valve); });
-        const bool with_dynamics = valve.dynamics.enabled;
-        timed(std::string("system: fits, drift maps, ") + (with_dynamics ? "dynamics, " : "") + "plots, report",
-              [&] { system::run(valve, with_dynamics); });
-        say("results: " + valve.output.directory + "/report.md, " + valve.output.directory + "/tables/, " +
-            valve.output.directory + "/system/");
-      }
-    else if (magnetics->parsed() && (o.calibrate || o.convergence))
-      {
-        if (o.calibrate)
-          timed("magnetics: C10 calibration", [&] { magnetics::calibrate(valve); });
-        if (o.convergence)
-          timed("magnetics: convergence study", [&] { magnetics::convergence_study(valve); });
-        say("results: " + valve.output.directory + "/magnetics/");
-      }
-    else if (magnetics->parsed() || structure->parsed() || flow->parsed())
-      {
-        if (magnetics->parsed())
+    const ValveDescription valve = prepare(o, dynamics->parsed(), run->parsed());
+    transaction(valve, [&] {
+      if (system->parsed() || dynamics->parsed())
+        {
+          // parameters.prm says how the tables were made: rewritten only once they are read and accepted
+          const bool with_dynamics = dynamics->parsed();
+          timed(std::string("system: fits, drift maps, ") + (with_dynamics ? "dynamics, " : "") + "plots, report",
+                [&] { system::run(valve, with_dynamics); });
+          write_parameters_file(valve);
+          say("results: " + valve.output.directory + "/report.md, " + valve.output.directory + "/system/");
+          return;
+        }
+      write_parameters_file(valve); // creates the output directory, or stops every rank with the reason
+      if (run->parsed())
+        {
           timed("magnetics (" + valve.torque_motor.model_level + ")", [&] { magnetics::run(valve); });
-        if (structure->parsed())
           timed("structure (" + valve.spring_tube.model_level + ")", [&] { structure::run(valve); });
-        if (flow->parsed())
           timed("flow (" + valve.pilot.model_level + ")", [&] { flow::run(valve); });
-        write_fits(valve);
-        say("results: " + tables_directory(valve) + "/");
-      }
-    else if (system->parsed() || dynamics->parsed())
-      {
-        const bool with_dynamics = dynamics->parsed();
-        timed(std::string("system: fits, drift maps, ") + (with_dynamics ? "dynamics, " : "") + "plots, report",
-              [&] { system::run(valve, with_dynamics); });
-        say("results: " + valve.output.directory + "/report.md, " + valve.output.directory + "/system/");
-      }
+          const bool with_dynamics = valve.dynamics.enabled;
+          timed(std::string("system: fits, drift maps, ") + (with_dynamics ? "dynamics, " : "") + "plots, report",
+                [&] { system::run(valve, with_dynamics); });
+          say("results: " + valve.output.directory + "/report.md, " + valve.output.directory + "/tables/, " +
+              valve.output.directory + "/system/");
+        }
+      else if (magnetics->parsed() && (o.calibrate || o.convergence))
+        {
+          if (o.calibrate)
+            timed("magnetics: C10 calibration", [&] { magnetics::calibrate(valve); });
+          if (o.convergence)
+            timed("magnetics: convergence study", [&] { magnetics::convergence_study(valve); });
+          say("results: " + valve.output.directory + "/magnetics/");
+        }
+      else
+        {
+          if (magnetics->parsed())
+            timed("magnetics (" + valve.torque_motor.model_level + ")", [&] { magnetics::run(valve); });
+          if (structure->parsed())
+            timed("structure (" + valve.spring_tube.model_level + ")", [&] { structure::run(valve); });
+          if (flow->parsed())
+            timed("flow (" + valve.pilot.model_level + ")", [&] { flow::run(valve); });
+          write_fits(valve);
+          say("results: " + tables_directory(valve) + "/");
+        }
+    });
     return 0;
   }
 
-  std::string one_line(std::string s)
-  {
-    for (char &c : s)
-      if (c == '\n' || c == '\r' || c == '\t')
-        c = ' ';
-    return s;
-  }
 } // namespace
 
 int main(int argc, char **argv)
@@ -198,7 +278,7 @@ int main(int argc, char **argv)
   catch (const std::exception &e)
     {
       if (servodrift::mpi_rank() == 0)
-        std::cerr << "servodrift: error: " << one_line(e.what()) << std::endl;
+        std::cerr << "servodrift: error: " << shown_input(e.what(), 340) << std::endl; // one line, printable
       return 1;
     }
 }

@@ -1,5 +1,7 @@
 #include "common/csv.h"
 
+#include "common/output_files.h"
+
 #include <stdexcept>
 
 namespace servodrift
@@ -22,7 +24,14 @@ namespace servodrift
           throw std::logic_error("CsvDocument: a row has " + std::to_string(r.size()) + " cells for " +
                                  std::to_string(columns.size()) + " columns");
         for (std::size_t k = 0; k < r.size(); ++k)
-          s += (k ? "," : "") + r[k];
+          {
+            if (is_non_finite_token(r[k]))
+              throw std::runtime_error("a result is not a finite number: column " + columns[k] + ", row " +
+                                       std::to_string(&r - rows.data() + 1) + " (" + r[k] +
+                                       "); nothing was written. This is a defect of servodrift: please report "
+                                       "it with the parameter file");
+            s += (k ? "," : "") + r[k];
+          }
         s += "\n";
       }
     return s;

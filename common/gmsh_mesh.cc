@@ -180,8 +180,11 @@ namespace servodrift
         {
           std::remove(file.c_str());
           const std::string errors = session.last_errors();
-          throw std::runtime_error(geo.name + ": gmsh could not mesh the geometry" +
-                                   (errors.empty() ? std::string() : ": " + errors));
+          throw InputError((geo.entries.empty() ? geo.name + ": gmsh could not mesh the geometry" :
+                                                  "the `" + geo.entries + "' entries give a geometry that gmsh cannot "
+                                                  "mesh (" + geo.name + "; parts overlap or touch? check the "
+                                                  "dimensions changed)") +
+                           (errors.empty() ? std::string() : ": " + errors.substr(0, 160)));
         }
       std::remove(file.c_str());
       return work();

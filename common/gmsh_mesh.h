@@ -34,6 +34,7 @@ namespace servodrift
     std::string name;      ///< for messages, e.g. "meshes/torque_motor.geo"
     std::string geo_text;  ///< the .geo file
     double unit = 1;       ///< length of one .geo unit [m] (templates are in mm: 1e-3)
+    std::string entries;   ///< the subsection whose entries set the geometry ("Torque motor"), for messages
   };
 
   /// Meshes `geo' with the ONELAB parameters "Parameters/<key>" set to the given values (in .geo

@@ -14,7 +14,8 @@
 // The first n_axes columns of a schema are the grid axes (a full tensor grid); the others are
 // values. flag: 0 = computed within the model's validity, 1 = a law was clamped to its validity
 // window (C6), 2 = the field solver did not converge (the reduced-order value stands in), 3 = an
-// exact limit of the field level (dp = 0 or a closed gap: no flow). The number of rows is stamped so that a truncated
+// exact limit of the field level (dp = 0 or a closed gap: no flow), 4 = a field value beyond the
+// range where the field level was verified (it stands, with a warning). The number of rows is stamped so that a truncated
 // file is refused.
 #include <string>
 #include <vector>
@@ -52,6 +53,9 @@ namespace servodrift
     constexpr double clamped = 1;       ///< a law was clamped to its validity window (C6)
     constexpr double not_converged = 2; ///< the field solver did not converge: the reduced-order value stands in
     constexpr double limit = 3;         ///< an exact limit, not a solution (no flow: dp = 0 or a closed gap)
+    constexpr double beyond_verified = 4; ///< a field value outside the range where the field level was
+                                          ///< verified: it differs from the reduced-order value by more
+                                          ///< than the stage's stated factor (flow/pilot_field_stage.cc)
   } // namespace flags
 
   class Table

@@ -64,6 +64,10 @@ namespace servodrift
   /// Checks that go beyond one entry's range (p_r < p_s, d < D, x0 <= D_N/4, positive torque-motor
   /// gaps at every temperature, temperatures inside the oil law's window, ...). Throws InputError.
   void validate(const ValveDescription &valve);
+  /// The checks of a whole run (`servodrift run'): the tables the stages will make must cover what
+  /// the system model asks of them (the pilot tables the whole pressure span). A stage run alone
+  /// may tabulate less. Throws InputError.
+  void validate_table_ranges(const ValveDescription &valve);
   /// The checks of the dynamics' parameters (frequencies, amplitudes within the torque table, the
   /// table reaching the nozzle contacts); validate() runs them when `Dynamics/Enabled'.
   void validate_dynamics(const ValveDescription &valve);

@@ -25,11 +25,7 @@ namespace servodrift
         std::remove(temporary.c_str());
         throw InputError(filename + ": VTK could not write the file");
       }
-    if (std::rename(temporary.c_str(), filename.c_str()) != 0)
-      {
-        std::remove(temporary.c_str());
-        throw InputError(filename + ": cannot replace");
-      }
+    install_file(temporary, filename);
   }
 
   void write_pvd_atomically(const std::string &filename, const std::vector<std::pair<double, std::string>> &datasets)

@@ -81,7 +81,7 @@ namespace servodrift::flow
             {"r0", r0 / mm},           {"l", g.fixed_orifice_length / mm}, {"ru", plenum / mm},
             {"lu", plenum / mm},       {"rd", 8 * r0 / mm},                {"ld", valve.pilot.field_chamber_length * r0 / mm},
             {"res", c.resolution}};
-          return FvMesh(mesh_template_all_groups({"meshes/fixed_orifice.geo", embedded::fixed_orifice_geo, mm}, parameters),
+          return FvMesh(mesh_template_all_groups({"meshes/fixed_orifice.geo", embedded::fixed_orifice_geo, mm, "Pilot stage"}, parameters),
                         Geometry::axisymmetric, "meshes/fixed_orifice.geo");
         }
       const double rn = 0.5 * g.nozzle_diameter, rl = 0.5 * g.land_diameter;
@@ -92,7 +92,7 @@ namespace servodrift::flow
         {"rn", rn / mm},     {"rl", rl / mm},     {"h", h / mm},       {"ro", valve.pilot.field_outlet_radius * rl / mm},
         {"rc", 2 * rn / mm}, {"lc", 2 * rn / mm}, {"lb", 4 * rn / mm}, {"le", 2 * rn / mm},
         {"res", c.resolution}};
-      return FvMesh(mesh_template_all_groups({"meshes/nozzle_flapper.geo", embedded::nozzle_flapper_geo, mm}, parameters),
+      return FvMesh(mesh_template_all_groups({"meshes/nozzle_flapper.geo", embedded::nozzle_flapper_geo, mm, "Pilot stage"}, parameters),
                     Geometry::axisymmetric, "meshes/nozzle_flapper.geo");
     }
 

@@ -62,6 +62,19 @@ namespace servodrift::flow
       record_length
     };
 
+    /// The field level was verified on RV-1's default sweep, where its discharge coefficients lie
+    /// within a factor 1.31 of the reduced-order closed forms E21-E22 (the orifice cavitating at the
+    /// full span 0.77 of E21, the nozzle at 10 um 1.29 of E22; doc/validation.md). Beyond this
+    /// factor (a cold oil far below the sweep's Reynolds numbers, a geometry far from RV-1's) the
+    /// case is flagged 4 and counted in the report (issue 24).
+    constexpr double verified_discharge_factor = 1.35;
+
+    bool beyond_verified(double field_discharge, double reduced_discharge)
+    {
+      return field_discharge > 0 && reduced_discharge > 0 &&
+             std::abs(std::log(field_discharge / reduced_discharge)) > std::log(verified_discharge_factor);
+    }
+
     double span(const ValveDescription &valve)
     {
       return valve.operating.supply_pressure - valve.operating.return_pressure;
@@ -199,7 +212,9 @@ namespace servodrift::flow
             record[max_wall_y_plus] = r.max_wall_y_plus;
             record[max_turbulent_viscosity_ratio] = r.max_turbulent_viscosity_ratio;
             record[iterations] = r.iterations;
-            record[flag] = flags::computed;
+            record[flag] = beyond_verified(record[discharge_coefficient], reduced.discharge_coefficient) ?
+                             flags::beyond_verified :
+                             flags::computed;
             last = slot->fields();
             last_model = t;
             last_dp = dp;
@@ -535,7 +550,9 @@ namespace servodrift::flow
         doc.comments = {"servodrift-output " + name + "_cases",
                         "field-level " + std::string(orifice ? "fixed-orifice" : "nozzle-flapper") +
                           " cases: results, diagnostics (model.md 4.2, C12) and the reduced-order values (E21-E23) "
-                          "beside them; flag 2 = not converged (the table carries the reduced-order value)",
+                          "beside them; flag 2 = not converged (the table carries the reduced-order value), 4 = "
+                          "beyond the verified range (C_d and the reduced-order C_d differ by more than a factor " +
+                          format_number(verified_discharge_factor) + ")",
                         "producer " + producer_string("flow/field"), "parameters-sha256 " + valve.parameters_sha256};
         doc.columns = {"temperature[degC]",
                        "gap[m]",
@@ -560,7 +577,7 @@ namespace servodrift::flow
         std::vector<std::pair<double, std::string>> datasets;
         for (const auto &r : records)
           {
-            const bool converged = r[flag] == flags::computed;
+            const bool converged = r[flag] == flags::computed || r[flag] == flags::beyond_verified;
             auto cell = [&](double v, bool defined = true) { return defined ? format_cell(v) : std::string(); };
             doc.rows.push_back({cell(r[temperature]), cell(r[gap], !orifice), cell(r[pressure_difference]),
                                 model_name(Turbulence(int(r[model]))), cell(r[flow_rate]), cell(r[discharge_coefficient]),
@@ -597,6 +614,11 @@ namespace servodrift::flow
       if (failed > 0)
         std::cerr << "servodrift: warning: " << failed << " of " << records.size() << " " << what
                   << " cases did not converge (flag 2; see flow/*_cases.csv)\n";
+      if (const std::size_t beyond = count_flagged(records, flag, flags::beyond_verified); beyond > 0)
+        std::cerr << "servodrift: warning: " << beyond << " of " << records.size() << " " << what
+                  << " cases lie beyond the range where the field level was verified: their C_d differs from the "
+                     "reduced-order value by more than a factor "
+                  << verified_discharge_factor << " (flag 4; see flow/*_cases.csv)\n";
       if (cavitating_cases > 0)
         std::cerr << "servodrift: note: " << cavitating_cases << " of " << records.size() << " " << what
                   << " cases cavitate ("

@@ -67,7 +67,7 @@ namespace servodrift::magnetics
       resolution = tm.field_mesh_resolution;
     const auto parameters = torque_motor_geometry_parameters(valve, T, resolution);
     const PlanarMesh mesh =
-      mesh_template({"meshes/torque_motor.geo", embedded::torque_motor_geo, 1e-3}, parameters,
+      mesh_template({"meshes/torque_motor.geo", embedded::torque_motor_geo, 1e-3, "Torque motor"}, parameters,
                     {{"armature", m::armature},
                      {"pole_pieces", m::pole_pieces},
                      {"magnet", m::magnet},

@@ -134,9 +134,11 @@ namespace servodrift::system
           if (!have_gnuplot)
             continue;
           const std::string command = "cd '" + dir + "' && gnuplot -e \"outfile='" + image + ".tmp'\" '" + plot.name + "." + format + ".gp' > /dev/null 2>&1";
-          if (std::system(command.c_str()) == 0 &&
-              std::rename((dir + "/" + image + ".tmp").c_str(), (dir + "/" + image).c_str()) == 0)
-            files.images.push_back("system/plots/" + image);
+          if (std::system(command.c_str()) == 0)
+            {
+              install_file(dir + "/" + image + ".tmp", dir + "/" + image);
+              files.images.push_back("system/plots/" + image);
+            }
           else
             {
               std::remove((dir + "/" + image + ".tmp").c_str());

@@ -1,9 +1,59 @@
 #include "system/stage_tables.h"
 
+#include "common/error.h"
+
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace servodrift::system
 {
+  namespace
+  {
+    /// What the valve model divides by must not vanish: a table that passes the reader's format
+    /// checks (an edited or foreign file) can still describe a valve that cannot be commanded or
+    /// held. Refused here, naming the file, rather than as a non-finite result later.
+    void check_physical(const Table &t, const std::string &file)
+    {
+      const auto refuse = [&](double T, const std::string &what) {
+        throw InputError(file + ": at " + format_number(T) + " degC " + what +
+                         " (a table from another tool or edited by hand? re-run its stage)");
+      };
+      const std::size_t T = 0;
+      if (t.name() == "torque_motor")
+        {
+          // the command acts through dT_em/di (K_t): the torque must change with the current
+          const std::size_t angle = t.column_index("angle"), torque = t.column_index("torque");
+          std::map<std::pair<double, double>, std::pair<double, double>> range; // (T, theta) -> min, max
+          for (const auto &r : t.rows)
+            {
+              const auto [it, fresh] = range.try_emplace({r[T], r[angle]}, r[torque], r[torque]);
+              if (!fresh)
+                it->second = {std::min(it->second.first, r[torque]), std::max(it->second.second, r[torque])};
+            }
+          for (const auto &[point, minmax] : range)
+            if (!(minmax.second > minmax.first))
+              refuse(point.first, "and " + format_number(point.second) +
+                                    " rad the torque does not change with the current: the valve cannot be commanded");
+        }
+      else if (t.name() == "spring_tube")
+        {
+          const std::size_t k = t.column_index("stiffness");
+          for (const auto &r : t.rows)
+            if (!(r[k] > 0))
+              refuse(r[T], "the stiffness is " + format_number(r[k]) + " N*m/rad; it must be > 0");
+        }
+      else
+        {
+          const std::size_t dp = t.column_index("pressure_difference"), q = t.column_index("flow_rate");
+          for (const auto &r : t.rows)
+            if (r[dp] > 0 && (!(r[q] >= 0) || (t.name() == "fixed_orifice" && !(r[q] > 0))))
+              refuse(r[T], "the flow rate at dp = " + format_number(r[dp]) + " Pa is " + format_number(r[q]) +
+                             " m^3/s; it must be > 0 for a pressure difference > 0");
+        }
+    }
+  } // namespace
+
   StageTables StageTables::read(const std::string &directory, const ValveDescription &valve)
   {
     StageTables t;
@@ -12,10 +62,31 @@ namespace servodrift::system
     t.fixed_orifice = Table::read(directory + "/fixed_orifice.csv", "fixed_orifice");
     t.nozzle_flapper = Table::read(directory + "/nozzle_flapper.csv", "nozzle_flapper");
     for (const Table *table : {&t.torque_motor, &t.spring_tube, &t.fixed_orifice, &t.nozzle_flapper})
+      check_physical(*table, directory + "/" + table->name() + ".csv");
+    for (const Table *table : {&t.torque_motor, &t.spring_tube, &t.fixed_orifice, &t.nozzle_flapper})
       if (table->parameters_sha256 != valve.parameters_sha256)
         t.warnings.push_back("tables/" + table->name() + ".csv was made with other parameters (sha256 " +
                              table->parameters_sha256.substr(0, 12) + ", this run " +
                              valve.parameters_sha256.substr(0, 12) + "); its numbers come from that valve description");
+    for (const Table *table : {&t.torque_motor, &t.spring_tube, &t.fixed_orifice, &t.nozzle_flapper})
+      {
+        std::size_t not_converged = 0, beyond_verified = 0;
+        for (const auto &row : table->rows)
+          {
+            not_converged += row.back() == flags::not_converged;
+            beyond_verified += row.back() == flags::beyond_verified;
+          }
+        if (not_converged > 0)
+          t.warnings.push_back("tables/" + table->name() + ".csv: " + std::to_string(not_converged) + " of " +
+                               std::to_string(table->rows.size()) +
+                               " rows did not converge at the field level (flag 2): the reduced-order value stands in");
+        if (beyond_verified > 0)
+          t.warnings.push_back("tables/" + table->name() + ".csv: " + std::to_string(beyond_verified) + " of " +
+                               std::to_string(table->rows.size()) +
+                               " rows lie beyond the range where the field level was verified (flag 4: the field "
+                               "and reduced-order discharge coefficients differ by more than the factor stated in "
+                               "flow/" + table->name() + "_cases.csv)");
+      }
     return t;
   }
 

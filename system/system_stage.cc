@@ -52,6 +52,14 @@ namespace servodrift::system
     return results;
   }
 
+  void check_operating_points(const ValveDescription &valve, const StageTables &tables)
+  {
+    const ValveModel model(valve, tables);
+    for (double T : valve.sweeps.drift_temperatures)
+      (void)stage_coefficients(model, T);
+    (void)compute_drift_map(model, OutputParameters::Progress::none);
+  }
+
   namespace
   {
     std::string cell(double v)

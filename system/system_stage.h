@@ -6,6 +6,7 @@
 #include "system/drift_map.h"
 #include "system/dynamics.h"
 #include "system/stage_coefficients.h"
+#include "system/stage_tables.h"
 
 #include <optional>
 #include <string>
@@ -27,6 +28,10 @@ namespace servodrift::system
   /// too if `with_dynamics'.
   SystemResults compute(const ValveDescription &valve, const std::string &tables_directory, bool with_dynamics = false);
 
+  /// The static operating points and drift map of the valve on `tables' (in memory), discarded:
+  /// whether the system model can run on tables with these ranges. Writes nothing. Throws what
+  /// compute() would (a TableRangeError naming the table, an InputError).
+  void check_operating_points(const ValveDescription &valve, const StageTables &tables);
   /// compute() on <output>/tables, then writes system/*.csv, tables/fits.json (with E28), the
   /// plots and report.md (rank 0).
   void run(const ValveDescription &valve, bool with_dynamics);

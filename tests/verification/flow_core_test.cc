@@ -43,7 +43,7 @@ namespace servodrift::flow
     /// The rectangle [x0, x1] x [y0, y1] of tests/verification/meshes/rectangle.geo.
     FvMesh rectangle(Geometry geometry, double x0, double x1, double y0, double y1, int nx, int ny, bool triangles = false)
     {
-      static const GmshTemplate geo{"rectangle.geo", read_file(source_dir + "/tests/verification/meshes/rectangle.geo"), 1.0};
+      static const GmshTemplate geo{"rectangle.geo", read_file(source_dir + "/tests/verification/meshes/rectangle.geo"), 1.0, ""};
       const PlanarMesh m = mesh_template_all_groups(
         geo, {{"x0", x0}, {"x1", x1}, {"y0", y0}, {"y1", y1}, {"nx", double(nx)}, {"ny", double(ny)}, {"tri", triangles ? 1.0 : 0.0}});
       return FvMesh(m, geometry, "rectangle.geo");
@@ -644,7 +644,7 @@ namespace servodrift::flow
   TEST_P(TurbulentPipe, FollowsBlasius)
   {
     const double L = 60, R = 1, U = 1, rho = 1, Re = 2e4;
-    static const GmshTemplate geo{"rectangle.geo", read_file(source_dir + "/tests/verification/meshes/rectangle.geo"), 1.0};
+    static const GmshTemplate geo{"rectangle.geo", read_file(source_dir + "/tests/verification/meshes/rectangle.geo"), 1.0, ""};
     const FvMesh mesh(mesh_template_all_groups(geo, {{"x0", 0}, {"x1", L}, {"y0", 0}, {"y1", R}, {"nx", 120}, {"ny", 40},
                                                      {"bump", 0.05}}),
                       Geometry::axisymmetric, "rectangle.geo");

@@ -24,7 +24,7 @@ namespace
 {
   GmshTemplate test_geometry(const std::string &name)
   {
-    return {name, read_file(std::string(SERVODRIFT_SOURCE_DIR) + "/tests/verification/meshes/" + name), 1e-3};
+    return {name, read_file(std::string(SERVODRIFT_SOURCE_DIR) + "/tests/verification/meshes/" + name), 1e-3, ""};
   }
 
   const double tenth = 0.1 * units::degree;
@@ -202,7 +202,7 @@ TEST(TorqueMotorField, MeshingFailureNamesTheTemplate)
 {
   try
     {
-      mesh_template({"broken.geo", "SetFactory(\"OpenCASCADE\");\nError(\"impossible part\");\n", 1e-3}, {}, {}, {}, false);
+      mesh_template({"broken.geo", "SetFactory(\"OpenCASCADE\");\nError(\"impossible part\");\n", 1e-3, ""}, {}, {}, {}, false);
       FAIL();
     }
   catch (const std::runtime_error &e)

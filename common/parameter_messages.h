@@ -1,0 +1,25 @@
+#pragma once
+// What the reading of a valve description (common/parameter_input.cc) says about the declared
+// entries: their names for "did you mean", and a check that every number converts.
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace servodrift
+{
+  /// The declared names under a subsection path: its subsections or its entries.
+  std::vector<std::string> declared_names(const dealii::ParameterHandler &prm, const std::vector<std::string> &path,
+                                          bool subsections);
+  /// " (did you mean `X'?)" for the nearest of `names', if it is near enough to be a typo; else "".
+  std::string suggestion(const std::string &given, const std::vector<std::string> &names);
+  /// "A/B/C"
+  std::string joined(const std::vector<std::string> &path);
+  /// Every number of every Double entry converts to a finite, normal double (deal.II's pattern
+  /// accepts a subnormal such as 1e-310; its conversion then fails with a raw exception). Throws
+  /// InputError naming the entry.
+  void check_numbers(const dealii::ParameterHandler &prm);
+} // namespace servodrift
