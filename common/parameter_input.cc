@@ -186,7 +186,7 @@ namespace servodrift
           return at + "no subsection `" + shown_input(name) + "'" + where +
                  suggestion(name, declared_names(prm, {}, true)) + list_hint;
         }
-      if (rest.find("matched nothing known") != std::string::npos || rest.find("line") != std::string::npos)
+      if (rest.rfind("The line <", 0) == 0 && rest.find("could not be parsed") != std::string::npos) // never echoed
         return at + "not a parameter line (expected `set Key = value', `subsection Name', `end' or `include "
                     "file')" + where;
       return at + shown_input(rest, 200) + where + list_hint;
