@@ -36,8 +36,10 @@ namespace servodrift
       FluidParameters::declare_parameters(prm);
       FlowSolverParameters::declare_parameters(prm);
       OffsetParameters::declare_parameters(prm);
+      AsymmetryParameters::declare_parameters(prm);
       SweepParameters::declare_parameters(prm);
       DynamicsParameters::declare_parameters(prm);
+      ToleranceParameters::declare_parameters(prm);
       FitParameters::declare_parameters(prm);
       OutputParameters::declare_parameters(prm);
     }
@@ -54,8 +56,10 @@ namespace servodrift
       v.fluid.parse_parameters(prm);
       v.flow_solver.parse_parameters(prm);
       v.offsets.parse_parameters(prm);
+      v.asymmetry.parse_parameters(prm);
       v.sweeps.parse_parameters(prm);
       v.dynamics.parse_parameters(prm);
+      v.tolerances.parse_parameters(prm);
       v.fits.parse_parameters(prm);
       v.output.parse_parameters(prm);
     }

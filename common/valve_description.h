@@ -3,6 +3,7 @@
 // through deal.II's ParameterHandler in one subsection per part (model.md section 2, decisions of
 // section 0). Defaults are the built-in valve RV-1, so no input file is needed.
 #include "common/parameters/armature.h"
+#include "common/parameters/asymmetry.h"
 #include "common/parameters/dynamics.h"
 #include "common/parameters/fits.h"
 #include "common/parameters/flow_solver.h"
@@ -15,6 +16,7 @@
 #include "common/parameters/spring_tube.h"
 #include "common/parameters/sweeps.h"
 #include "common/parameters/thermal_expansion.h"
+#include "common/parameters/tolerances.h"
 #include "common/parameters/torque_motor.h"
 
 #include <string>
@@ -34,8 +36,10 @@ namespace servodrift
     FluidParameters fluid;
     FlowSolverParameters flow_solver;
     OffsetParameters offsets;
+    AsymmetryParameters asymmetry;
     SweepParameters sweeps;
     DynamicsParameters dynamics;
+    ToleranceParameters tolerances;
     FitParameters fits;
     OutputParameters output;
 
@@ -71,4 +75,9 @@ namespace servodrift
   /// The checks of the dynamics' parameters (frequencies, amplitudes within the torque table, the
   /// table reaching the nozzle contacts); validate() runs them when `Dynamics/Enabled'.
   void validate_dynamics(const ValveDescription &valve);
+  /// The asymmetric valve's left and right parts physical (validate() runs it).
+  void validate_asymmetry(const ValveDescription &valve);
+  /// The tolerance study's distributions, correlations and spec; validate() runs it when
+  /// `Tolerances/Enabled'.
+  void validate_tolerances(const ValveDescription &valve);
 } // namespace servodrift

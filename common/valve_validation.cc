@@ -376,6 +376,9 @@ namespace servodrift
                  format_number(1 / (T - op.reference_temperature)) + " 1/degC");
     if (v.dynamics.enabled)
       validate_dynamics(v);
+    validate_asymmetry(v);
+    if (v.tolerances.enabled)
+      validate_tolerances(v);
 
     // Offsets (C8): re-nulling with the hydraulic null removes a hydraulic-null deviation exactly
     if (v.offsets.deviation_target == OffsetParameters::Target::hydraulic_null &&

@@ -6,7 +6,7 @@
 #include "common/sweep.h"
 #include "common/units.h"
 #include "common/version.h"
-#include "magnetics/reduced_order_circuit.h"
+#include "common/torque_motor_circuit.h"
 #include "magnetics/torque_motor_field.h"
 #include "magnetics/torque_motor_stage.h"
 
@@ -46,7 +46,7 @@ namespace servodrift::magnetics
 
     Coefficients circuit_coefficients(const ValveDescription &valve, double T)
     {
-      const ReducedOrderCircuit circuit(valve, T);
+      const TorqueMotorCircuit circuit(valve, T);
       const double tenth = 0.1 * units::degree, i_r = valve.operating.rated_current;
       Coefficients c{};
       c.torque_tenth = circuit.torque(tenth, 0);

@@ -8,7 +8,7 @@
 #include "common/units.h"
 #include "common/version.h"
 #include "common/vtu_output.h"
-#include "magnetics/reduced_order_circuit.h"
+#include "common/torque_motor_circuit.h"
 #include "magnetics/torque_motor_field.h"
 
 #include <algorithm>
@@ -41,7 +41,7 @@ namespace servodrift::magnetics
     CaseRows reduced_order_case(const ValveDescription &valve, double T)
     {
       const auto &sw = valve.sweeps;
-      const ReducedOrderCircuit circuit(valve, T);
+      const TorqueMotorCircuit circuit(valve, T);
       const double tenth = 0.1 * units::degree;
       const PaperMagneticSpring paper(valve, T, circuit.torque(tenth, 0) / tenth);
       CaseRows rows;

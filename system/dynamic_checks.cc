@@ -49,12 +49,12 @@ namespace servodrift::system
     // the control-cavity pressure: dp/dt = (beta_e/V_0) (Q_0(p_s - p) - Q_N(p - p_r)) at a held flapper
     const double p = null.bridge.left_pressure, gap = null.bridge.left_gap;
     const double dp_0 = eq.supply_pressure() - p, dp_N = p - eq.return_pressure();
-    const double Q = eq.orifice_flow(dp_0);
+    const double Q = eq.orifice_flow(left, dp_0);
     // the left cavity's volume where the spool sits (E33: V_0 + A_v x_v)
     const double V = eq.control_cavity_volume() + eq.control_area() * null.spool.displacement, beta = eq.bulk_modulus();
     c.pressure_time_constant_closed_form = V / (beta * (Q / (2 * dp_0) + Q / (2 * dp_N)));
     const double h = 1e-6 * (eq.supply_pressure() - eq.return_pressure());
-    const double slope = -(eq.cavity_inflow(gap, p + h, 0) - eq.cavity_inflow(gap, p - h, 0)) / (2 * h);
+    const double slope = -(eq.cavity_inflow(left, gap, p + h, 0) - eq.cavity_inflow(left, gap, p - h, 0)) / (2 * h);
     c.pressure_time_constant_tables = V / (beta * slope);
     c.pressure_time_constant = -1 / l.A(2, 2);
     return c;

@@ -60,6 +60,33 @@ namespace servodrift::system
 
     coil_resistance = laws::coil_resistance(tm, T);
     L_c = laws::coil_inductance(tm);
+
+    // The asymmetric valve (issue 25; doc/method.md "Asymmetric valve"). The tables hold the
+    // nominal geometry. A fixed orifice of diameter d' = s d keeps C_d(Re) (geometric similarity):
+    // Re/C_d = d sqrt(2 dp/rho)/nu, so C_d' at dp is the table's at s^2 dp, and Q' = s^2 c(s^2 dp)
+    // sqrt(dp) with the table's conductance c. The gap flow's Reynolds number (gap x jet velocity)
+    // does not see the nozzle diameter: the curtain area pi d_N x scales by s_N, the jet force
+    // (bore pressure over pi d_N^2/4) by s_N^2.
+    for (const Side side : {left, right})
+      {
+        const SideDeviations &d = offsets_.sides[side];
+        side_gap[side] = x0 + d.null_gap;
+        const double s0 = (valve.pilot.fixed_orifice_diameter + d.orifice_diameter) / valve.pilot.fixed_orifice_diameter;
+        orifice_area_ratio[side] = s0 * s0;
+        orifice_factor[side] = d.orifice_discharge_factor;
+        nozzle_diameter_ratio[side] = (valve.pilot.nozzle_diameter + d.nozzle_diameter) / valve.pilot.nozzle_diameter;
+        nozzle_factor[side] = d.nozzle_discharge_factor;
+        force_ratio[side] = nozzle_diameter_ratio[side] * nozzle_diameter_ratio[side];
+      }
+    magnetic_null_ = offsets_.magnetic_null;
+    motor_mismatch = offsets_.magnetic.any();
+    if (motor_mismatch)
+      {
+        const MismatchEffect e = mismatch_effect(valve, T, offsets_.magnetic);
+        magnetic_null_ += e.null_angle;
+        magnetic_spring_ratio = e.magnetic_spring_ratio;
+        torque_constant_ratio = e.torque_constant_ratio;
+      }
   }
 
   // --- armature and flapper --------------------------------------------------------------------
@@ -68,7 +95,13 @@ namespace servodrift::system
   {
     try
       {
-        return f.torque(T, angle - offsets_.magnetic_null, current);
+        const double a = angle - magnetic_null_;
+        if (!motor_mismatch)
+          return f.torque(T, a, current);
+        // the mismatched motor: the table's magnetic-spring part T(a, 0) and current part
+        // T(a, i) - T(a, 0), each scaled as E3 scales K_m and K_t at this temperature
+        const double spring = f.torque(T, a, 0.0);
+        return magnetic_spring_ratio * spring + torque_constant_ratio * (f.torque(T, a, current) - spring);
       }
     catch (const TableRangeError &e)
       {
@@ -91,9 +124,9 @@ namespace servodrift::system
     // Kelvin-Voigt stop at each nozzle tip, active only while the flapper is past it, never pulling
     const double x_f = flapper_displacement(angle), v_f = r * angular_velocity;
     double torque = 0;
-    if (const double depth = x_f - x0; depth > 0) // into the left nozzle: pushed towards -x_f
+    if (const double depth = x_f - side_gap[left]; depth > 0) // into the left nozzle: pushed towards -x_f
       torque -= r * std::max(0.0, contact_stiffness * depth + contact_damping * v_f);
-    if (const double depth = -x0 - x_f; depth > 0) // into the right nozzle: pushed towards +x_f
+    if (const double depth = -side_gap[right] - x_f; depth > 0) // into the right nozzle: pushed towards +x_f
       torque += r * std::max(0.0, contact_stiffness * depth - contact_damping * v_f);
     return torque;
   }
@@ -103,49 +136,50 @@ namespace servodrift::system
     const auto [left_gap, right_gap] = gaps(angle);
     // E29 with the offsets of E39: K_t i + K_m theta (the table), -K_a (theta - theta_s), -r dF_f
     return motor_torque(angle, current) - K_a * (angle - offsets_.spring_tube_rest_angle) -
-           r * (flapper_force(left_gap, p_L - p_r) - flapper_force(right_gap, p_R - p_r)) +
+           r * (flapper_force(left, left_gap, p_L - p_r) - flapper_force(right, right_gap, p_R - p_r)) +
            nozzle_contact_torque(angle, angular_velocity);
   }
 
   // --- pilot stage -----------------------------------------------------------------------------
 
-  std::array<double, 2> ValveEquations::gaps(double angle) const
+  std::array<double, 2> ValveEquations::gaps_at(double x_f) const
   {
-    const double x_f = flapper_displacement(angle);
-    return {std::max(0.0, x0 - x_f), std::max(0.0, x0 + x_f)};
+    return {std::max(0.0, side_gap[left] - x_f), std::max(0.0, side_gap[right] + x_f)};
   }
 
   // The tables give Q/sqrt(dp), which tends to 0 in the laminar limit dp -> 0, so Q = c(dp) sqrt(dp)
   // is a signed square root with a laminar region (E20) of the table's own making. Beyond the
   // tabulated pressure range (only in a transient) C_d is held at its last value, and flagged.
-  double ValveEquations::orifice_flow(double dp) const
+  double ValveEquations::orifice_flow(Side side, double dp) const
   {
-    const double a = std::abs(dp);
-    if (a > orifice_dp_max)
+    const double a = std::abs(dp), a_similar = orifice_area_ratio[side] * a; // s^2 dp: the same Re (constructor)
+    if (a_similar > orifice_dp_max)
       table_exceeded = true;
-    return std::copysign(f.orifice_conductance(T, std::min(a, orifice_dp_max)) * std::sqrt(a), dp); // E31
+    const double c = orifice_factor[side] * orifice_area_ratio[side] * f.orifice_conductance(T, std::min(a_similar, orifice_dp_max));
+    return std::copysign(c * std::sqrt(a), dp); // E31
   }
 
-  double ValveEquations::nozzle_flow(double gap, double dp) const
+  double ValveEquations::nozzle_flow(Side side, double gap, double dp) const
   {
     const double a = std::abs(dp);
     if (a > nozzle_dp_max)
       table_exceeded = true;
     const double h = std::clamp(gap, 0.0, gap_max);
-    return std::copysign(f.nozzle_conductance(T, h, std::min(a, nozzle_dp_max)) * std::sqrt(a), dp); // E32
+    const double c = nozzle_factor[side] * nozzle_diameter_ratio[side] * f.nozzle_conductance(T, h, std::min(a, nozzle_dp_max));
+    return std::copysign(c * std::sqrt(a), dp); // E32
   }
 
-  double ValveEquations::flapper_force(double gap, double dp) const
+  double ValveEquations::flapper_force(Side side, double gap, double dp) const
   {
     // E23 / table; odd in dp (a reversed jet pulls), proportional to dp beyond the table
     const double a = std::abs(dp), h = std::clamp(gap, 0.0, gap_max);
     const double force = a <= nozzle_dp_max ? f.flapper_force(T, h, a) : f.flapper_force(T, h, nozzle_dp_max) * a / nozzle_dp_max;
-    return std::copysign(force, dp);
+    return std::copysign(force_ratio[side] * force, dp);
   }
 
-  double ValveEquations::cavity_inflow(double gap, double pressure, double volume_rate) const
+  double ValveEquations::cavity_inflow(Side side, double gap, double pressure, double volume_rate) const
   {
-    return orifice_flow(p_s - pressure) - nozzle_flow(gap, pressure - p_r) - volume_rate; // E33
+    return orifice_flow(side, p_s - pressure) - nozzle_flow(side, gap, pressure - p_r) - volume_rate; // E33
   }
 
   // --- spool stage -----------------------------------------------------------------------------
@@ -211,9 +245,10 @@ namespace servodrift::system
     d.angular_velocity =
       (net_torque(s.angle, s.angular_velocity, s.left_pressure, s.right_pressure, i) - B_a * s.angular_velocity) / J_a;
     // E33: the spool end enlarges the left cavity and shrinks the right one as it moves to +x
-    d.left_pressure = beta / (V_0 + A_v * s.spool_displacement) * cavity_inflow(left_gap, s.left_pressure, volume_rate);
+    d.left_pressure =
+      beta / (V_0 + A_v * s.spool_displacement) * cavity_inflow(left, left_gap, s.left_pressure, volume_rate);
     d.right_pressure =
-      beta / (V_0 - A_v * s.spool_displacement) * cavity_inflow(right_gap, s.right_pressure, -volume_rate);
+      beta / (V_0 - A_v * s.spool_displacement) * cavity_inflow(right, right_gap, s.right_pressure, -volume_rate);
     d.spool_displacement = s.spool_velocity;
     // E35: m_v x_v'' = net force - B_v(T) x_v'
     d.spool_velocity = (spool_net_force(s.spool_displacement, s.spool_velocity, s.left_pressure - s.right_pressure,

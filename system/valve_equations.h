@@ -4,6 +4,7 @@
 // static model (valve_model.cc) solves these equations at zero rates; the dynamic analyses integrate
 // and linearise the same right-hand side. Only the coefficient tables and the valve description go
 // in; nothing here knows which level made a table (D13).
+#include "common/torque_motor_circuit.h"
 #include "common/valve_description.h"
 #include "system/stage_tables.h"
 
@@ -12,12 +13,23 @@
 
 namespace servodrift::system
 {
-  /// Assembly offsets of E39: spring-tube rest angle, magnetic null, hydraulic null.
+  /// The two sides of the pilot bridge: left is the side of p_L (model.md 1.12).
+  enum Side : std::size_t
+  {
+    left = 0,
+    right = 1
+  };
+
+  /// How this valve is built: the assembly offsets of E39 (spring-tube rest angle, magnetic null,
+  /// hydraulic null) and, for an asymmetric valve, the left and right build deviations of the pilot
+  /// bridge and the torque motor's mismatch (issue 25). Default: the ideal symmetric valve.
   struct Offsets
   {
-    double spring_tube_rest_angle = 0; ///< theta_s [rad]
-    double magnetic_null = 0;          ///< theta_m [rad]
-    double hydraulic_null = 0;         ///< x_n [m]
+    double spring_tube_rest_angle = 0;   ///< theta_s [rad]
+    double magnetic_null = 0;            ///< theta_m [rad]
+    double hydraulic_null = 0;           ///< x_n [m]
+    std::array<SideDeviations, 2> sides; ///< left, right deviations from the tables' geometry
+    MagneticMismatch magnetic;           ///< mapped to a magnetic null, K_m and K_t through E3
   };
 
   /// The states of model.md 1.20 (SI, gauge pressures).
@@ -85,16 +97,18 @@ namespace servodrift::system
                       double current) const;
 
     // --- pilot stage (E31-E33, E23) ----------------------------------------------------------
-    /// The nozzle-flapper gaps x0 -+ x_f, floored at 0 (a flapper on a nozzle closes it) [m]
-    std::array<double, 2> gaps(double angle) const;
-    /// E31: Q_0 through one fixed orifice for dp = p_s - p (signed square root, laminar near 0) [m^3/s]
-    double orifice_flow(double pressure_difference) const;
-    /// E32: Q_N through one nozzle-flapper gap for dp = p - p_r [m^3/s]
-    double nozzle_flow(double gap, double pressure_difference) const;
-    /// E23 / table: force of one jet on the flapper [N]
-    double flapper_force(double gap, double pressure_difference) const;
+    /// The nozzle-flapper gaps x0_L - x_f and x0_R + x_f at an armature angle, floored at 0 (a
+    /// flapper on a nozzle closes it) [m]
+    std::array<double, 2> gaps(double angle) const { return gaps_at(flapper_displacement(angle)); }
+    std::array<double, 2> gaps_at(double flapper_displacement) const;
+    /// E31: Q_0 through one side's fixed orifice for dp = p_s - p (signed square root, laminar near 0) [m^3/s]
+    double orifice_flow(Side side, double pressure_difference) const;
+    /// E32: Q_N through one side's nozzle-flapper gap for dp = p - p_r [m^3/s]
+    double nozzle_flow(Side side, double gap, double pressure_difference) const;
+    /// E23 / table: force of one side's jet on the flapper [N]
+    double flapper_force(Side side, double gap, double pressure_difference) const;
     /// E33's numerator: net inflow Q_0 - Q_N - (spool end's volume rate) into a control cavity [m^3/s]
-    double cavity_inflow(double gap, double pressure, double volume_rate) const;
+    double cavity_inflow(Side side, double gap, double pressure, double volume_rate) const;
 
     // --- spool stage (E35-E37) -----------------------------------------------------------------
     MeteringEdges metering(double spool_displacement, double brake_pressure) const;
@@ -121,7 +135,17 @@ namespace servodrift::system
     double temperature() const { return T; }
     bool voltage_drive() const { return voltage_drive_; }
     const Offsets &offsets() const { return offsets_; }
-    double null_gap() const { return x0; }                           ///< x0(T) [m]
+    /// The same valve with another hydraulic null x_n (the null adjustment) [m]
+    ValveEquations with_hydraulic_null(double x_n) const
+    {
+      ValveEquations e = *this;
+      e.offsets_.hydraulic_null = x_n;
+      return e;
+    }
+    double null_gap() const { return x0; }                           ///< nominal x0(T) [m]
+    double null_gap(Side side) const { return side_gap[side]; }      ///< this side's x0(T) [m]
+    /// theta_m plus the magnetic null of the motor's mismatch at T (E3) [rad]
+    double magnetic_null() const { return magnetic_null_; }
     double pivot_to_nozzle_distance() const { return r; }            ///< [m]
     double supply_pressure() const { return p_s; }                   ///< [Pa]
     double return_pressure() const { return p_r; }                   ///< [Pa]
@@ -149,6 +173,12 @@ namespace servodrift::system
     double T;
     bool voltage_drive_;
     double p_s, p_r, r, x0, K_a, J_a, B_a;
+    // asymmetric valve (issue 25): per side, and the motor's mismatch mapped through E3
+    std::array<double, 2> side_gap, orifice_area_ratio, orifice_factor;
+    std::array<double, 2> nozzle_diameter_ratio, nozzle_factor, force_ratio;
+    double magnetic_null_;
+    bool motor_mismatch;
+    double magnetic_spring_ratio = 1, torque_constant_ratio = 1; // K_m'/K_m, K_t'/K_t at T
     double contact_stiffness, contact_damping;     // at the nozzle axis [N/m], [N*s/m]
     double orifice_dp_max, nozzle_dp_max, gap_max; // table ranges
     double A_v, A_fb, V_0, beta, V_B, m_v, B_v, k_s, F_s0, W, x_ov, stroke, C_dv, jet_cosine;

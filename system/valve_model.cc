@@ -74,19 +74,20 @@ namespace servodrift::system
 
   BridgeState ValveModel::bridge(const ValveEquations &eq, double x_f) const
   {
-    const double x0 = eq.null_gap(), p_s = eq.supply_pressure(), p_r = eq.return_pressure();
+    const double p_s = eq.supply_pressure(), p_r = eq.return_pressure();
     BridgeState b;
     // A gap that is zero up to rounding (flapper on a nozzle) is exactly zero.
-    b.left_gap = std::max(0.0, x0 - x_f);
-    b.right_gap = std::max(0.0, x0 + x_f);
-    auto half_bridge = [&](double gap, double &pressure, double &flow, double &force) {
+    const auto gaps = eq.gaps_at(x_f);
+    b.left_gap = gaps[left];
+    b.right_gap = gaps[right];
+    auto half_bridge = [&](Side side, double gap, double &pressure, double &flow, double &force) {
       // E33 at rest: no spool motion, no net inflow
-      pressure = bridge_pressure([&](double p) { return eq.cavity_inflow(gap, p, 0.0); }, p_s, p_r);
-      flow = eq.nozzle_flow(gap, pressure - p_r);
-      force = eq.flapper_force(gap, pressure - p_r);
+      pressure = bridge_pressure([&](double p) { return eq.cavity_inflow(side, gap, p, 0.0); }, p_s, p_r);
+      flow = eq.nozzle_flow(side, gap, pressure - p_r);
+      force = eq.flapper_force(side, gap, pressure - p_r);
     };
-    half_bridge(b.left_gap, b.left_pressure, b.left_flow, b.left_force);
-    half_bridge(b.right_gap, b.right_pressure, b.right_flow, b.right_force);
+    half_bridge(left, b.left_gap, b.left_pressure, b.left_flow, b.left_force);
+    half_bridge(right, b.right_gap, b.right_pressure, b.right_flow, b.right_force);
     return b;
   }
 
@@ -155,8 +156,7 @@ namespace servodrift::system
 
   OperatingPoint ValveModel::solve(const ValveEquations &eq, double i) const
   {
-    const double T = eq.temperature(), x0 = eq.null_gap();
-    const Offsets &o = eq.offsets();
+    const double T = eq.temperature(), x0_L = eq.null_gap(left), x0_R = eq.null_gap(right);
     // E29 at rest with E39: motor torque - spring-tube torque - flapper torque (+ nozzle contact) = 0
     const auto net_torque = [&](double theta) {
       const BridgeState b = bridge(eq, eq.flapper_displacement(theta));
@@ -164,7 +164,7 @@ namespace servodrift::system
     };
 
     // Bracket: the nozzle contacts (x_f = -+ x0), narrowed to what the tables cover.
-    double lo = eq.angle_of(-x0), hi = eq.angle_of(x0);
+    double lo = eq.angle_of(-x0_R), hi = eq.angle_of(x0_L);
     bool lo_is_contact = true, hi_is_contact = true;
     auto narrow = [&](double table_lo, double table_hi) {
       if (table_lo > lo)
@@ -173,12 +173,12 @@ namespace servodrift::system
         hi = table_hi, hi_is_contact = false;
     };
     const auto &angles = f.torque.axis(1);
-    const double angle_lo = o.magnetic_null + angles.front(), angle_hi = o.magnetic_null + angles.back();
+    const double angle_lo = eq.magnetic_null() + angles.front(), angle_hi = eq.magnetic_null() + angles.back();
     narrow(angle_lo, angle_hi);
     const auto &gaps = f.nozzle_conductance.axis(1);
-    // left gap x0 - x_f and right gap x0 + x_f both within [gap_min, gap_max]
-    const double x_f_lo = std::max(x0 - gaps.back(), gaps.front() - x0);
-    const double x_f_hi = std::min(x0 - gaps.front(), gaps.back() - x0);
+    // left gap x0_L - x_f and right gap x0_R + x_f both within [gap_min, gap_max]
+    const double x_f_lo = std::max(x0_L - gaps.back(), gaps.front() - x0_R);
+    const double x_f_hi = std::min(x0_L - gaps.front(), gaps.back() - x0_R);
     narrow(eq.angle_of(x_f_lo), eq.angle_of(x_f_hi));
     if (!(lo < hi))
       throw TableRangeError("the tables leave no armature angle for the flapper at " + format_number(T) +
@@ -220,47 +220,98 @@ namespace servodrift::system
     return op;
   }
 
+  double ValveModel::null_flapper_displacement(const ValveEquations &eq) const
+  {
+    // p_L - p_R rises monotonically with x_f (the left gap closes, the right one opens). A
+    // symmetric bridge is balanced at x_f = 0 exactly (both halves compute the same numbers).
+    const auto &[l, r] = eq.offsets().sides;
+    if (l.orifice_diameter == r.orifice_diameter && l.nozzle_diameter == r.nozzle_diameter &&
+        l.null_gap == r.null_gap && l.orifice_discharge_factor == r.orifice_discharge_factor &&
+        l.nozzle_discharge_factor == r.nozzle_discharge_factor)
+      return 0.0;
+    const auto imbalance = [&](double x_f) {
+      const BridgeState b = bridge(eq, x_f);
+      return b.left_pressure - b.right_pressure;
+    };
+    const auto &gaps = f.nozzle_conductance.axis(1);
+    const double x0_L = eq.null_gap(left), x0_R = eq.null_gap(right);
+    const double lo = std::max(x0_L - gaps.back(), gaps.front() - x0_R);
+    const double hi = std::min(x0_L - gaps.front(), gaps.back() - x0_R);
+    const double g_lo = imbalance(lo), g_hi = imbalance(hi);
+    if (!(g_lo < 0 && g_hi > 0))
+      throw TableRangeError("the pilot bridge of this asymmetric valve has no null (p_L = p_R) at " +
+                            format_number(eq.temperature()) + " degC within the nozzle_flapper table's gaps (the "
+                            "left and right parts differ too much; see `Asymmetry' and `Tolerances')");
+    return find_root(imbalance, lo, hi, g_lo, g_hi, 1e-13 * (hi - lo), "pilot null (p_L = p_R)");
+  }
+
   double ValveModel::nulling_hydraulic_null(const Offsets &o) const
   {
-    // With the flapper centred (x_n = r theta) the two jets balance, so E29 at rest holds the motor
-    // against the spring tube alone: T_em(T0, theta - theta_m, 0) = K_a (theta - theta_s).
+    // At the pilot null x_f* (p_L = p_R) E29 at rest holds the motor against the spring tube and
+    // the jets' difference (zero for a symmetric bridge): T_em(T0, theta - theta_m, 0) =
+    // K_a (theta - theta_s) + r (F_L - F_R)(x_f*); the adjustment then sets x_n = r theta - x_f*.
     const double T0 = valve.operating.reference_temperature;
-    const double r = valve.armature.pivot_to_nozzle_distance, p_r = valve.operating.return_pressure;
+    const double r = valve.armature.pivot_to_nozzle_distance;
+    const ValveEquations eq = equations(T0, o);
+    const double x_f = null_flapper_displacement(eq);
+    const BridgeState b = bridge(eq, x_f);
     const auto balance = [&](double theta) {
-      const ValveEquations eq = equations(T0, {o.spring_tube_rest_angle, o.magnetic_null, r * theta});
-      return eq.net_torque(theta, 0.0, p_r, p_r, 0.0);
+      return eq.with_hydraulic_null(r * theta - x_f).net_torque(theta, 0.0, b.left_pressure, b.right_pressure, 0.0);
     };
     const auto &angles = f.torque.axis(1);
-    const double lo = o.magnetic_null + angles.front(), hi = o.magnetic_null + angles.back();
+    const double lo = eq.magnetic_null() + angles.front(), hi = eq.magnetic_null() + angles.back();
     const double b_lo = balance(lo), b_hi = balance(hi);
     if (!(b_lo > 0 && b_hi < 0))
       throw TableRangeError("nulling at the reference temperature: K_a (theta - theta_s) = T_em(theta - theta_m) "
                             "has no root within the torque_motor table's angles (extend `Sweeps/Motor angles'; "
                             "a root also needs K_a > K_m)");
-    return r * find_root(balance, lo, hi, b_lo, b_hi, 1e-13 * (hi - lo), "null adjustment at T0");
+    return r * find_root(balance, lo, hi, b_lo, b_hi, 1e-13 * (hi - lo), "null adjustment at T0") - x_f;
   }
 
   std::optional<double> ValveModel::null_shift_current(double T, const Offsets &o) const
   {
-    // Flapper centred (x_f = 0, p_L = p_R): theta = x_n/r and the jets balance.
-    const ValveEquations eq = equations(T, o);
-    const double theta = eq.angle_of(0.0), p_r = eq.return_pressure();
-    const double a = theta - o.magnetic_null;
+    return null_shift_current(equations(T, o));
+  }
+
+  std::optional<double> ValveModel::null_shift_current(const ValveEquations &eq) const
+  {
+    const NullShift n = null_shift(eq);
+    return n.beyond_table ? std::nullopt : std::optional<double>(n.current);
+  }
+
+  ValveModel::NullShift ValveModel::null_shift(const ValveEquations &eq) const
+  {
+    // At the pilot null (p_L = p_R, x_f*) the armature sits at theta = (x_f* + x_n)/r; the current
+    // that holds it there against the spring tube and the jets' difference restores null.
+    const double x_f = null_flapper_displacement(eq);
+    const BridgeState b = bridge(eq, x_f);
+    const double theta = eq.angle_of(x_f);
+    const double a = theta - eq.magnetic_null();
     const auto &angles = f.torque.axis(1);
-    if (a < angles.front() || a > angles.back())
-      return std::nullopt;
-    const auto balance = [&](double i) { return eq.net_torque(theta, 0.0, p_r, p_r, i); };
     const auto &currents = f.torque.axis(2);
+    if (a < angles.front() || a > angles.back()) // the spring tube's torque far exceeds the motor's
+      return {a > 0 ? currents.back() : currents.front(), true};
+    const auto balance = [&](double i) { return eq.net_torque(theta, 0.0, b.left_pressure, b.right_pressure, i); };
     const double b_lo = balance(currents.front()), b_hi = balance(currents.back());
-    if ((b_lo > 0) == (b_hi > 0) && b_lo != 0 && b_hi != 0)
-      return std::nullopt;
-    return find_root(balance, currents.front(), currents.back(), b_lo, b_hi, 1e-15, "null-shift current");
+    if ((b_lo > 0) == (b_hi > 0) && b_lo != 0 && b_hi != 0) // the torque rises with the current
+      return {b_lo > 0 ? currents.front() : currents.back(), true};
+    return {find_root(balance, currents.front(), currents.back(), b_lo, b_hi, 1e-15, "null-shift current"), false};
+  }
+
+  Offsets ValveModel::described_offsets() const
+  {
+    const auto &base = valve.offsets;
+    Offsets o{base.spring_tube_rest_angle, base.magnetic_null, base.hydraulic_null};
+    const auto &a = valve.asymmetry;
+    o.sides = {a.left, a.right};
+    o.magnetic = {a.lower_gap_mismatch, a.left_remanence, a.right_remanence};
+    return o;
   }
 
   Offsets ValveModel::offsets_for_deviation(double theta_d) const
   {
     const auto &base = valve.offsets;
-    Offsets o{base.spring_tube_rest_angle, base.magnetic_null, base.hydraulic_null};
+    Offsets o = described_offsets();
     const double r = valve.armature.pivot_to_nozzle_distance;
     switch (base.deviation_target)
       {

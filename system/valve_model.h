@@ -83,12 +83,25 @@ namespace servodrift::system
     OperatingPoint solve(double temperature, double current, const Offsets &offsets) const;
     OperatingPoint solve(const ValveEquations &equations, double current) const;
 
-    /// Hydraulic null x_n that centres the flapper at T0 and i = 0 for the given theta_s, theta_m:
-    /// the manufacturer's null adjustment (D8 "nulled at reference").
+    /// Hydraulic null x_n that puts the pilot at null (p_L = p_R) at T0 and i = 0 for the other
+    /// offsets and deviations of `offsets': the manufacturer's null adjustment (D8 "nulled at reference").
     double nulling_hydraulic_null(const Offsets &offsets) const;
-    /// The current that centres the flapper (p_L = p_R) at T; empty if it lies outside the
+    /// The flapper position x_f* of the pilot null, p_L = p_R (0 for a symmetric bridge) [m].
+    double null_flapper_displacement(const ValveEquations &equations) const;
+    /// The current that restores the pilot null (p_L = p_R) at T; empty if it lies outside the
     /// torque_motor table's current range.
     std::optional<double> null_shift_current(double temperature, const Offsets &offsets) const;
+    std::optional<double> null_shift_current(const ValveEquations &equations) const;
+    /// The null-shift current, or where none lies within the torque_motor table, the table's end
+    /// current on the side the balance points to, flagged (a bound on the true value) [A].
+    struct NullShift
+    {
+      double current;
+      bool beyond_table;
+    };
+    NullShift null_shift(const ValveEquations &equations) const;
+    /// The valve as described: `Offsets' and `Asymmetry' of the valve description.
+    Offsets described_offsets() const;
     /// Offsets of a valve with assembly deviation theta_d (D8: target and nulling convention).
     Offsets offsets_for_deviation(double deviation_angle) const;
 

@@ -161,7 +161,7 @@ TEST(Dynamics, CavityMassIsConservedOverAStep)
         d.integrator([](double) { return rated; }, v.description.dynamics, "test", d.vector_of(start.state()));
       integrator->start(0.0, d.vector_of(start.state()));
       const auto net_flow = [&](const std::vector<double> &y) {
-        return eq.orifice_flow(eq.supply_pressure() - y[2]) - eq.nozzle_flow(eq.gaps(y[0])[0], y[2] - eq.return_pressure());
+        return eq.orifice_flow(left, eq.supply_pressure() - y[2]) - eq.nozzle_flow(left, eq.gaps(y[0])[0], y[2] - eq.return_pressure());
       };
       const double A_v = eq.control_area(), V_0 = eq.control_cavity_volume(), beta = eq.bulk_modulus();
       double flow = 0, compression = 0;

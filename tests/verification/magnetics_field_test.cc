@@ -6,7 +6,7 @@
 #include "common/units.h"
 #include "common/gmsh_mesh.h"
 #include "magnetics/magnetostatic_problem.h"
-#include "magnetics/reduced_order_circuit.h"
+#include "common/torque_motor_circuit.h"
 #include "magnetics/torque_motor_field.h"
 #include "tests/support/test_support.h"
 
@@ -136,7 +136,7 @@ TEST(TorqueMotorField, RV1SymmetryMethodsAndCircuit)
   const auto both = model.torque(0.15 * units::degree, -0.01);
   EXPECT_LT(relative(both.virtual_work, both.stress_tensor), 0.01);
   // calibrated (C10): the field's K_m and K_t within 15 % of the circuit's
-  const ReducedOrderCircuit circuit(v, 40);
+  const TorqueMotorCircuit circuit(v, 40);
   EXPECT_LT(relative(plus.stress_tensor, circuit.torque(tenth, 0)), 0.15);
   EXPECT_LT(relative((ip.stress_tensor - im.stress_tensor) / 0.04, (circuit.torque(0, 0.02) - circuit.torque(0, -0.02)) / 0.04),
             0.15);

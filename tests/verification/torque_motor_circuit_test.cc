@@ -1,6 +1,6 @@
 // Reduced-order torque motor (E2-E10) against model.md 2.2 / C1 / C2 and the closed forms E4, E5.
 #include "common/units.h"
-#include "magnetics/reduced_order_circuit.h"
+#include "common/torque_motor_circuit.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -10,20 +10,20 @@
 #include <cmath>
 
 using namespace servodrift;
-using magnetics::ReducedOrderCircuit;
+using servodrift::TorqueMotorCircuit;
 using test::relative;
 
 namespace
 {
   const double tenth = 0.1 * units::degree;
 
-  double slope_in_angle(const ReducedOrderCircuit &c, double i = 0)
+  double slope_in_angle(const TorqueMotorCircuit &c, double i = 0)
   {
     const double h = 1e-6; // rad; central difference, truncation ~ (h/theta_nonlinear)^2 < 1e-9
     return (c.torque(h, i) - c.torque(-h, i)) / (2 * h);
   }
 
-  double slope_in_current(const ReducedOrderCircuit &c)
+  double slope_in_current(const TorqueMotorCircuit &c)
   {
     const double h = 1e-6; // A
     return (c.torque(0, h) - c.torque(0, -h)) / (2 * h);
@@ -35,7 +35,7 @@ TEST(TorqueMotorCircuit, IssueFigures)
   // Issue 2: K_m = 11.36 (40) and 10.87 (120) N*m/rad, T(0.1 deg, 40) = 0.01982 N*m, K_t(40) = 0.955 N*m/A,
   // each within 1 %. K_m is the secant T(0.1 deg)/0.1 deg (C1).
   const auto v = test::valve();
-  const ReducedOrderCircuit c40(v, 40), c120(v, 120);
+  const TorqueMotorCircuit c40(v, 40), c120(v, 120);
   EXPECT_LT(relative(c40.torque(tenth, 0) / tenth, 11.36), 0.01);
   EXPECT_LT(relative(c120.torque(tenth, 0) / tenth, 10.87), 0.01);
   EXPECT_LT(relative(c40.torque(tenth, 0), 0.01982), 0.01);
@@ -47,7 +47,7 @@ TEST(TorqueMotorCircuit, PrintedInputsReproduceC1C2)
   // C2: the printed inputs give T(0.1 deg) = 0.019772 / 0.018926 N*m (5 digits: 3e-5 relative),
   // K_t = 0.954 (3 digits); C1: small-signal K_m = 11.23 / 10.75 (4 digits: 5e-4).
   const auto v = test::valve();
-  const ReducedOrderCircuit c40(v, 40), c120(v, 120);
+  const TorqueMotorCircuit c40(v, 40), c120(v, 120);
   EXPECT_LT(relative(c40.torque(tenth, 0), 0.019772), 3e-5);
   EXPECT_LT(relative(c120.torque(tenth, 0), 0.018926), 3e-5);
   EXPECT_LT(relative(slope_in_current(c40), 0.954), 6e-4);
@@ -70,7 +70,7 @@ TEST(TorqueMotorCircuit, SymmetricClosedFormE4)
   // E4 (Thevenin of magnet + leakage, symmetric gaps, R_a = 0) is exact for the small-signal
   // coefficients of E3 at theta = 0, i = 0: agreement to the central differences' 1e-8.
   const auto v = test::valve();
-  const ReducedOrderCircuit c(v, 40);
+  const TorqueMotorCircuit c(v, 40);
   const double M = c.magnet_mmf(), Rm = c.magnet_reluctance(), Rl = c.leakage_reluctance();
   const double M_eq = M * Rl / (Rl + Rm), R_eq = Rl * Rm / (Rl + Rm);
   const double Rg = c.gap_reluctance_at_null(), a = c.pivot_to_pole_distance(), g = c.mean_gap();
@@ -91,7 +91,7 @@ TEST(TorqueMotorCircuit, IdealCircuitMatchesMerrittE5)
   // terms at large angle and current.
   const auto v = test::valve({"Torque motor/Recoil permeability=1e4", "Torque motor/Magnet width=0.1",
                                  "Torque motor/Magnet depth=0.1", "Torque motor/Leakage reluctance=1e12"});
-  const ReducedOrderCircuit c(v, 40);
+  const TorqueMotorCircuit c(v, 40);
   const double Rg = c.gap_reluctance_at_null(), a = c.pivot_to_pole_distance(), g = c.mean_gap();
   const double M0 = c.magnet_mmf() * c.leakage_reluctance() / (c.leakage_reluctance() + c.magnet_reluctance());
   const double phi_g = M0 / (2 * Rg), N = v.torque_motor.turns_per_coil;
@@ -111,7 +111,7 @@ TEST(TorqueMotorCircuit, TorqueIsOddAndCurrentSignIsRight)
   const auto v = test::valve();
   for (double T : {40.0, 120.0}) // at 120 degC the upper and lower gaps differ (E6, E7)
     {
-      const ReducedOrderCircuit c(v, T);
+      const TorqueMotorCircuit c(v, T);
       for (double theta : {0.01, 0.1, 0.3})
         EXPECT_LT(std::abs(c.torque(theta * units::degree, 0) + c.torque(-theta * units::degree, 0)),
                   1e-13 * std::abs(c.torque(theta * units::degree, 0)));
@@ -127,7 +127,7 @@ TEST(TorqueMotorCircuit, SeriesAidingCoilsDoubleKt)
 {
   const auto push_pull = test::valve();
   const auto series = test::valve({"Torque motor/Coil connection=series-aiding"});
-  EXPECT_LT(relative(slope_in_current(ReducedOrderCircuit(series, 40)), 2 * slope_in_current(ReducedOrderCircuit(push_pull, 40))),
+  EXPECT_LT(relative(slope_in_current(TorqueMotorCircuit(series, 40)), 2 * slope_in_current(TorqueMotorCircuit(push_pull, 40))),
             1e-9);
 }
 
@@ -135,7 +135,7 @@ TEST(TorqueMotorCircuit, FluxConservation)
 {
   // Kirchhoff at the nodes: magnet flux = leakage + flux into the upper pole (gaps 3 + 4)
   const auto v = test::valve();
-  const auto s = ReducedOrderCircuit(v, 80).solve(0.07 * units::degree, 0.013);
+  const auto s = TorqueMotorCircuit(v, 80).solve(0.07 * units::degree, 0.013);
   EXPECT_LT(std::abs(s.magnet_flux - s.leakage_flux - s.gap_flux[2] - s.gap_flux[3]), 1e-15 * s.magnet_flux);
   EXPECT_LT(std::abs(s.gap_flux[2] + s.gap_flux[3] - s.gap_flux[0] - s.gap_flux[1]), 1e-15 * s.magnet_flux);
 }

@@ -1,0 +1,69 @@
+#include "common/parameters/asymmetry.h"
+
+#include "common/parameters/parameter_helpers.h"
+
+namespace servodrift
+{
+  using namespace parameters;
+
+  namespace
+  {
+    const char *side_name(bool left) { return left ? "Left" : "Right"; }
+  } // namespace
+
+  void AsymmetryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection);
+    for (const bool left : {true, false})
+      {
+        const std::string side = side_name(left), p = left ? "p_L" : "p_R";
+        prm.declare_entry(side + " orifice diameter deviation", "0", Patterns::Double(-1e-4, 1e-4),
+                          "Diameter of the " + std::string(left ? "left" : "right") +
+                            " fixed orifice (feeding " + p + ") minus the nominal `Pilot stage/Fixed orifice diameter' "
+                            "(E31). With tables of the nominal geometry the area scales exactly and C_d is "
+                            "read at the same Reynolds number (doc/method.md). [m]");
+        prm.declare_entry(side + " nozzle diameter deviation", "0", Patterns::Double(-1e-4, 1e-4),
+                          "Diameter of the " + std::string(left ? "left" : "right") +
+                            " nozzle minus the nominal `Pilot stage/Nozzle diameter' (E32, E23): the curtain "
+                            "area scales with it, the flapper force with its square. [m]");
+        prm.declare_entry(side + " null gap deviation", "0", Patterns::Double(-5e-5, 5e-5),
+                          "This side's nozzle-flapper gap at x_f = 0 minus the nominal x0(T) (flapper "
+                          "centring, nozzle position). [m]");
+        prm.declare_entry(side + " orifice discharge factor", "1", Patterns::Double(0.5, 1.5),
+                          "Discharge coefficient of this side's fixed orifice over the table's (edge "
+                          "quality): multiplies its flow (E31). [1]");
+        prm.declare_entry(side + " nozzle discharge factor", "1", Patterns::Double(0.5, 1.5),
+                          "Discharge coefficient of this side's nozzle-flapper gap over the table's "
+                          "(edge quality): multiplies its flow (E32). [1]");
+      }
+    prm.declare_entry("Lower gap mismatch", "0", Patterns::Double(-5e-5, 5e-5),
+                      "Torque motor: g_1 - g_2 at theta = 0, the lower pole piece's faces ground to "
+                      "different heights (E2, E3); mapped to a magnetic null and K_m, K_t at each "
+                      "temperature through the circuit E3. [m]");
+    prm.declare_entry("Left magnet remanence deviation", "0", Patterns::Double(-0.2, 0.2),
+                      "(B_r - nominal B_r)/nominal B_r of the left magnet (E8); E3 has the magnets in "
+                      "parallel, so K_m and K_t follow the mean of the two. [1]");
+    prm.declare_entry("Right magnet remanence deviation", "0", Patterns::Double(-0.2, 0.2),
+                      "(B_r - nominal B_r)/nominal B_r of the right magnet (E8). [1]");
+    prm.leave_subsection();
+  }
+
+  void AsymmetryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection);
+    for (const bool left : {true, false})
+      {
+        const std::string side = side_name(left);
+        SideDeviations &d = left ? this->left : right;
+        d.orifice_diameter = prm.get_double(side + " orifice diameter deviation");
+        d.nozzle_diameter = prm.get_double(side + " nozzle diameter deviation");
+        d.null_gap = prm.get_double(side + " null gap deviation");
+        d.orifice_discharge_factor = prm.get_double(side + " orifice discharge factor");
+        d.nozzle_discharge_factor = prm.get_double(side + " nozzle discharge factor");
+      }
+    lower_gap_mismatch = prm.get_double("Lower gap mismatch");
+    left_remanence = prm.get_double("Left magnet remanence deviation");
+    right_remanence = prm.get_double("Right magnet remanence deviation");
+    prm.leave_subsection();
+  }
+} // namespace servodrift
