@@ -119,12 +119,14 @@ namespace
       }
   }
 
-  ValveDescription prepare(const Options &o, bool dynamics, bool whole_run)
+  ValveDescription prepare(const Options &o, bool dynamics, bool tolerances, bool whole_run)
   {
     say(producer_string("on " + std::to_string(mpi_size()) + (mpi_size() == 1 ? " rank" : " ranks")));
     ValveDescription valve = load(o);
     if (dynamics) // `servodrift dynamics' runs them whatever `Dynamics/Enabled' says
       validate_dynamics(valve);
+    if (tolerances) // as `servodrift tolerances' does the study whatever `Tolerances/Enabled' says
+      validate_tolerances(valve);
     if (whole_run)
       {
         validate_table_ranges(valve);
@@ -173,7 +175,10 @@ namespace
     auto *system = app.add_subcommand("system", "system model alone, from the tables already in <output>/tables");
     auto *dynamics = app.add_subcommand(
       "dynamics", "system model with the dynamics (modes, step and frequency responses), from the tables in <output>/tables");
-    for (auto *c : {run, magnetics, structure, flow, system, dynamics})
+    auto *tolerances = app.add_subcommand(
+      "tolerances", "system model with the tolerance study (Monte Carlo of the thermal null shift, yield, Sobol' "
+                    "indices), from the tables in <output>/tables");
+    for (auto *c : {run, magnetics, structure, flow, system, dynamics, tolerances})
       add_common_options(c, o);
     magnetics->add_flag("--calibrate", o.calibrate,
                         "C10: calibrate the field model's equivalent magnet width at T0 against the circuit");
@@ -210,14 +215,17 @@ namespace
         return 0;
       }
 
-    const ValveDescription valve = prepare(o, dynamics->parsed(), run->parsed());
+    const ValveDescription valve = prepare(o, dynamics->parsed(), tolerances->parsed(), run->parsed());
+    const auto system_label = [](system::Analyses a) {
+      return std::string("system: fits, drift maps, ") + (a.dynamics ? "dynamics, " : "") +
+             (a.tolerances ? "tolerances, " : "") + "plots, report";
+    };
     transaction(valve, [&] {
-      if (system->parsed() || dynamics->parsed())
+      if (system->parsed() || dynamics->parsed() || tolerances->parsed())
         {
           // parameters.prm says how the tables were made: rewritten only once they are read and accepted
-          const bool with_dynamics = dynamics->parsed();
-          timed(std::string("system: fits, drift maps, ") + (with_dynamics ? "dynamics, " : "") + "plots, report",
-                [&] { system::run(valve, with_dynamics); });
+          const system::Analyses analyses{dynamics->parsed(), tolerances->parsed()};
+          timed(system_label(analyses), [&] { system::run(valve, analyses); });
           write_parameters_file(valve);
           say("results: " + valve.output.directory + "/report.md, " + valve.output.directory + "/system/");
           return;
@@ -228,9 +236,8 @@ namespace
           timed("magnetics (" + valve.torque_motor.model_level + ")", [&] { magnetics::run(valve); });
           timed("structure (" + valve.spring_tube.model_level + ")", [&] { structure::run(valve); });
           timed("flow (" + valve.pilot.model_level + ")", [&] { flow::run(valve); });
-          const bool with_dynamics = valve.dynamics.enabled;
-          timed(std::string("system: fits, drift maps, ") + (with_dynamics ? "dynamics, " : "") + "plots, report",
-                [&] { system::run(valve, with_dynamics); });
+          const system::Analyses analyses{valve.dynamics.enabled, valve.tolerances.enabled};
+          timed(system_label(analyses), [&] { system::run(valve, analyses); });
           say("results: " + valve.output.directory + "/report.md, " + valve.output.directory + "/tables/, " +
               valve.output.directory + "/system/");
         }

@@ -70,22 +70,24 @@ namespace servodrift
       read_parameters(prm, input_file, overrides);
     }
 
-    /// The values as used, without the Output subsection, which changes no number.
+    /// The values as used, without the subsections that change no table: Output, and Tolerances (the
+    /// tolerance study reads the tables of the valve as described; its settings are in parameters.prm).
     std::string hashed_text(const ParameterHandler &prm)
     {
       std::ostringstream s;
       prm.print_parameters(s, ParameterHandler::ShortPRM);
       std::istringstream in(s.str());
       std::string line, out;
-      bool in_output = false;
+      bool skipping = false;
       while (std::getline(in, line))
         {
           const std::string t = collapse_whitespace(line);
-          if (t == std::string("subsection ") + OutputParameters::subsection)
-            in_output = true;
-          else if (in_output && t == "end" && line.find_first_not_of(' ') == 0)
-            in_output = false;
-          else if (!in_output)
+          if (t == std::string("subsection ") + OutputParameters::subsection ||
+              t == std::string("subsection ") + ToleranceParameters::subsection)
+            skipping = true;
+          else if (skipping && t == "end" && line.find_first_not_of(' ') == 0)
+            skipping = false;
+          else if (!skipping)
             out += line + "\n";
         }
       return out;

@@ -45,7 +45,7 @@ namespace servodrift
 
     std::string source;            ///< the input file, or "built-in RV-1"
     std::string parameter_file;    ///< the complete, documented parameter file as used (PRM)
-    std::string parameters_sha256; ///< sha256 of the values as used, without the Output subsection
+    std::string parameters_sha256; ///< sha256 of the values as used, without the Output and Tolerances subsections (they change no table)
   };
 
   enum class ParameterFormat

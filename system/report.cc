@@ -4,6 +4,7 @@
 #include "common/units.h"
 #include "common/version.h"
 #include "system/dynamics_report.h"
+#include "system/tolerance_output.h"
 #include "system/system_stage.h"
 
 #include <cmath>
@@ -268,6 +269,10 @@ namespace servodrift::system
       dynamics_section(out, valve, *r.dynamics);
     else
       out << "## Dynamics\n\nNot computed in this run (`Dynamics/Enabled`, or `servodrift dynamics`).\n\n";
+    if (r.tolerances)
+      tolerance_section(out, valve, *r.tolerances);
+    else
+      out << "## Tolerances\n\nNot computed in this run (`Tolerances/Enabled`, or `servodrift tolerances`).\n\n";
 
     out << "## Plots\n\n";
     for (const auto &image : plots.images)
@@ -284,6 +289,9 @@ namespace servodrift::system
                          "`system/step_metrics.csv`, `system/sine_response.csv`, `system/dynamics_summary.csv`" +
                            std::string(r.dynamics->fixed_time.empty() ? "" : ", `system/fixed_time_study.csv`") + "\n" :
                          "")
+        << (r.tolerances ? std::string("- `system/tolerance_samples.csv`, `system/tolerance_summary.csv`") +
+                             (r.tolerances->sobol ? ", `system/sobol_indices.csv`" : "") + "\n" :
+                           std::string())
         << "- `system/plots/`: images, their data (`.dat`) and gnuplot scripts (`.gp`)\n";
     write_file_atomically(path, out.str());
   }

@@ -11,12 +11,13 @@
 #include "system/dynamics_plots.h"
 #include "system/plots.h"
 #include "system/report.h"
+#include "system/tolerance_output.h"
 
 #include <iostream>
 
 namespace servodrift::system
 {
-  SystemResults compute(const ValveDescription &valve, const std::string &tables_directory, bool with_dynamics)
+  SystemResults compute(const ValveDescription &valve, const std::string &tables_directory, Analyses analyses)
   {
     const StageTables tables = StageTables::read(tables_directory, valve);
     const ValveModel model(valve, tables);
@@ -27,8 +28,10 @@ namespace servodrift::system
     for (double T : valve.sweeps.drift_temperatures)
       results.coefficients.push_back(stage_coefficients(model, T));
     results.drift_map = compute_drift_map(model, valve.output.progress);
-    if (with_dynamics)
+    if (analyses.dynamics)
       results.dynamics = compute_dynamics(model, valve.output.progress);
+    if (analyses.tolerances)
+      results.tolerances = compute_tolerances(model, valve.output.progress);
 
     // E28: dF_f = K_f(T) x_f with K_f(T) = c1 T^4 + c2 T^3 + c3 T^2 + c4 T + c5
     std::vector<std::vector<double>> T;
@@ -151,9 +154,9 @@ namespace servodrift::system
     }
   } // namespace
 
-  void run(const ValveDescription &valve, bool with_dynamics)
+  void run(const ValveDescription &valve, Analyses analyses)
   {
-    const SystemResults results = compute(valve, tables_directory(valve), with_dynamics);
+    const SystemResults results = compute(valve, tables_directory(valve), analyses);
     write_fits(valve, {results.flow_force_fit});
     on_rank_zero([&] {
       for (const auto &w : results.warnings)
@@ -165,9 +168,13 @@ namespace servodrift::system
       write_drift_map(valve, results, dir);
       if (results.dynamics)
         write_dynamics_tables(valve, *results.dynamics, dir);
+      if (results.tolerances)
+        write_tolerance_tables(valve, *results.tolerances, dir);
       auto plots = write_plots(valve, results, dir + "/plots");
       if (results.dynamics)
         write_dynamics_plots(valve, *results.dynamics, dir + "/plots", plots);
+      if (results.tolerances)
+        write_tolerance_plots(valve, *results.tolerances, dir + "/plots", plots);
       write_report(valve, results, plots, valve.output.directory + "/report.md");
     });
   }

@@ -7,6 +7,7 @@
 #include "system/dynamics.h"
 #include "system/stage_coefficients.h"
 #include "system/stage_tables.h"
+#include "system/tolerance_study.h"
 
 #include <optional>
 #include <string>
@@ -22,11 +23,19 @@ namespace servodrift::system
     std::vector<std::string> warnings;
     std::vector<std::string> table_producers;    ///< producer line of each table (tells the model level)
     std::optional<DynamicsResults> dynamics;     ///< when asked for (issue 23)
+    std::optional<ToleranceResults> tolerances;  ///< when asked for (issue 25)
+  };
+
+  /// The analyses beyond the static ones (stage coefficients, operating points, drift maps).
+  struct Analyses
+  {
+    bool dynamics = false;
+    bool tolerances = false;
   };
 
   /// Everything, from the tables in `tables_directory', without writing anything; the dynamics
-  /// too if `with_dynamics'.
-  SystemResults compute(const ValveDescription &valve, const std::string &tables_directory, bool with_dynamics = false);
+  /// and the tolerance study too if asked for.
+  SystemResults compute(const ValveDescription &valve, const std::string &tables_directory, Analyses analyses = {});
 
   /// The static operating points and drift map of the valve on `tables' (in memory), discarded:
   /// whether the system model can run on tables with these ranges. Writes nothing. Throws what
@@ -34,5 +43,5 @@ namespace servodrift::system
   void check_operating_points(const ValveDescription &valve, const StageTables &tables);
   /// compute() on <output>/tables, then writes system/*.csv, tables/fits.json (with E28), the
   /// plots and report.md (rank 0).
-  void run(const ValveDescription &valve, bool with_dynamics);
+  void run(const ValveDescription &valve, Analyses analyses);
 } // namespace servodrift::system
