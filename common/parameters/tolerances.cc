@@ -64,7 +64,7 @@ namespace servodrift
                       "Level of every confidence interval (yield, Sobol' indices). [1]");
     prm.declare_entry("Correlations", "", Patterns::Anything(),
                       "Correlations of the Gaussian copula, `Quantity A : Quantity B : rho' separated by "
-                      "`;', the quantities named as their subsections; the matrix must be positive "
+                      "commas, the quantities named as their subsections; the matrix must be positive "
                       "definite. Sobol' indices need independent quantities. [1]");
     for (const auto &[name, unit] : quantities())
       {
@@ -132,17 +132,17 @@ namespace servodrift
         distributions.push_back(d);
         prm.leave_subsection();
       }
-    // `A : B : rho; ...'
+    // `A : B : rho, ...'
     correlations.clear();
     const std::string text = prm.get("Correlations");
     std::stringstream items(text);
     std::string item;
     const auto refuse = [](const std::string &what) {
       throw InputError("`Tolerances/Correlations' " + what +
-                       " (allowed: `Quantity A : Quantity B : rho' separated by `;', rho in (-1, 1), the "
+                       " (allowed: `Quantity A : Quantity B : rho' separated by commas, rho in (-1, 1), the "
                        "quantities named as the subsections of `Tolerances')");
     };
-    while (std::getline(items, item, ';'))
+    while (std::getline(items, item, ','))
       {
         if (trim(item).empty())
           continue;

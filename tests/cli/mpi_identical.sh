@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The outputs of `mpirun -np 2' are byte-identical to the serial run's.
-# usage: mpi_identical.sh servodrift mpirun [whole-chain|flow-field]
+# usage: mpi_identical.sh servodrift mpirun [whole-chain|flow-field|tolerances]
 #   whole-chain (default): `servodrift run' with the field-level torque motor on a coarse mesh and the
 #     reduced-order pilot stage (the field-level flow is the other case), two temperatures; its four
 #     tables, the fits, the drift maps and the dynamics (a temperature's linear analyses and steps,
@@ -11,6 +11,9 @@
 #     (flow/pilot_field_stage.h). A small sweep on a coarse mesh: two temperatures, two
 #     orifice pressure levels (so each orifice chain goes on from the path's state), one gap at one
 #     pressure level; every case must converge.
+#   tolerances: `servodrift tolerances' on reduced-order tables (made once, serially): the valves of
+#     the Monte Carlo and of the Sobol' design are cases shared over the ranks; the draws, the
+#     statistics and the bootstrap are seeded.
 set -eu
 servodrift=$1 mpirun=$2 which=${3:-whole-chain}
 work=$(mktemp -d)
@@ -37,6 +40,20 @@ case "$which" in
           --set "Sweeps/Field orifice pressure fractions=0.05, 0.25" --set "Sweeps/Field gap fractions=1"
           --set "Sweeps/Field nozzle pressure fractions=0.5")
     files=(tables/fixed_orifice.csv tables/nozzle_flapper.csv) ;;
+  tolerances)
+    command=tolerances
+    sets=(--set "Output/Plots=false" --set "Torque motor/Model level=reduced-order"
+          --set "Pilot stage/Model level=reduced-order" --set "Spring tube/Model level=reduced-order"
+          --set "Sweeps/Drift temperatures=40, 80, 120" --set "Sweeps/Deviation angles=0"
+          --set "Tolerances/Samples=150" --set "Tolerances/Sobol base samples=32"
+          --set "Tolerances/Left orifice diameter/Distribution=normal"
+          --set "Tolerances/Left orifice diameter/Standard deviation=1e-6"
+          --set "Tolerances/Magnetic null/Distribution=uniform"
+          --set "Tolerances/Magnetic null/Lower bound=-2e-4" --set "Tolerances/Magnetic null/Upper bound=2e-4")
+    for d in serial mpi; do
+      "$servodrift" run "${sets[@]}" -o "$work/$d" > "$work/tables.log" 2>&1 || { cat "$work/tables.log"; exit 1; }
+    done
+    files=(system/tolerance_samples.csv system/tolerance_summary.csv system/sobol_indices.csv) ;;
   *) echo "unknown case '$which'"; exit 2 ;;
 esac
 "$servodrift" "$command" "${sets[@]}" -o "$work/serial" > "$work/serial.log" 2>&1 || { cat "$work/serial.log"; exit 1; }
