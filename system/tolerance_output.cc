@@ -198,12 +198,16 @@ namespace servodrift::system
     // envelope: T, q01, q05, q50, q95, q99 of the null-shift current [% of rated]
     std::ostringstream envelope;
     envelope << "# temperature[degC] null-shift current [% of rated]: q01 q05 q50 q95 q99\n";
+    double extent = spec; // the y range shows the spec and every quantile
     for (double T : r.temperatures)
       {
         const MeasureStatistics *m = find(r, "null_shift_current", T);
         envelope << format_cell(T);
         for (double q : m->quantiles)
-          envelope << ' ' << format_cell(1e-3 * q * percent);
+          {
+            envelope << ' ' << format_cell(1e-3 * q * percent);
+            extent = std::max(extent, std::abs(1e-3 * q * percent));
+          }
         envelope << '\n';
       }
     write_file_atomically(dir + "/tolerance_envelope.dat", envelope.str());
@@ -224,6 +228,7 @@ namespace servodrift::system
        "set title 'Thermal null shift of " + std::to_string(r.valves.size()) + " valves nulled at " +
          format_number(valve.operating.reference_temperature) + " degC'\nset grid\nset key outside right\n"
          "set xlabel 'temperature [degC]'\nset ylabel 'null-shift current [% of rated]'\nset xrange [" + range + "]\n"
+         "set yrange [" + format_cell(-1.15 * extent) + ":" + format_cell(1.15 * extent) + "]\n"
          "plot 'tolerance_envelope.dat' using 1:3:5 with filledcurves fs transparent solid 0.3 lc 'blue' title '5-95 %', "
          "'' using 1:2 with lines dt 2 lc 'blue' title '1 %', '' using 1:6 with lines dt 2 lc 'blue' title '99 %', "
          "'' using 1:4 with linespoints lw 2 lc 'blue' title 'median', " +
@@ -249,7 +254,7 @@ namespace servodrift::system
         plots.push_back({"sobol_indices",
                          "set title \"Sobol' indices of the maximum |null shift|\"\nset grid y\nset style data histograms\n"
                          "set style histogram errorbars gap 1 lw 1\nset style fill solid 0.6 border -1\n"
-                         "set xtics rotate by -35\nset yrange [0:1.05]\nset ylabel 'index [1]'\nset key top right\n"
+                         "set xtics rotate by -35\nset bmargin 9\nset rmargin 10\nset yrange [0:1.05]\nset ylabel 'index [1]'\nset key top right\n"
                          "plot 'sobol_indices.dat' using 2:3:4:xtic(1) title 'first order', '' using 5:6:7 title 'total'\n"});
       }
     render_plots(valve, plots, dir, files);
