@@ -212,6 +212,8 @@ TEST(AsymmetricValve, MotorMismatchThroughTheCircuit)
       EXPECT_LT(relative(r.torque_constant_ratio, 1.03), 1e-6) << T;
       EXPECT_LT(relative(r.magnetic_spring_ratio, 1.03 * 1.03), 1e-6) << T;
       const MismatchEffect g1 = mismatch_effect(v, T, {2e-6, 0, 0}), g2 = mismatch_effect(v, T, {4e-6, 0, 0});
+      std::cout << "lower gap mismatch 2 um at " << T << " degC: magnetic null " << g1.null_angle << " rad, K_m x "
+                << g1.magnetic_spring_ratio << ", K_t x " << g1.torque_constant_ratio << "\n";
       EXPECT_GT(std::abs(g1.null_angle), 1e-6); // rad
       EXPECT_LT(relative(g2.null_angle, 2 * g1.null_angle), 2e-2) << T;
       const TorqueMotorCircuit built(v, T, {2e-6, 0, 0});
