@@ -253,7 +253,7 @@ namespace servodrift
           else
             {
               path.push_back(key);
-              if (!prm.subsection_path_exists(path))
+              if (!prm.subsection_path_exists({key})) // relative to the subsection entered
                 throw InputError(file + ": no subsection `" + entry + "'" +
                                  suggestion(key, declared_names(prm, {path.begin(), path.end() - 1}, true)) + list_hint);
               prm.enter_subsection(key);

@@ -87,6 +87,10 @@ namespace servodrift
     const auto &t = v.tolerances;
     if (!(t.null_shift_spec > 0))
       refuse("Tolerances/Null-shift spec", "= 0 % must be > 0 (allowed: (0, 100] % of the rated current)");
+    if (t.sobol_base_samples > 0 && t.sobol_base_samples < 64)
+      refuse("Tolerances/Sobol base samples", "= " + std::to_string(t.sobol_base_samples) +
+                                                " is too few for an estimate with a bootstrap interval (allowed: 0, "
+                                                "no Sobol' study, or at least 64)");
     const auto &names = ToleranceParameters::quantities();
     const auto active = t.active();
     if (active.empty())

@@ -174,6 +174,9 @@ namespace servodrift::system
                              " estimator, OpenTURNS) of each output, N = " + std::to_string(s.base_samples) + ", " +
                              std::to_string(s.evaluations) + " valves; " + format_number(100 * t.confidence_level) +
                              " % bootstrap intervals of " + std::to_string(t.bootstrap_size) + " resamples");
+    for (std::size_t o = 0; o < s.outputs.size(); ++o)
+      if (s.indices[o].constant_output)
+        sobol.comments.push_back(s.outputs[o] + " does not vary over the design: its indices are undefined, written as 0");
     sobol.columns = {"output[-]", "quantity[-]", "first_order[1]", "first_order_lower[1]", "first_order_upper[1]",
                      "total[1]", "total_lower[1]", "total_upper[1]", "output_variance[%^2]"};
     for (std::size_t o = 0; o < s.outputs.size(); ++o)
@@ -290,10 +293,13 @@ namespace servodrift::system
         out << "**Largest contributors** to the maximum |null shift| (total Sobol' index, " << estimator_name(t.sobol_estimator)
             << ", N = " << r.sobol->base_samples << ", " << format_number(100 * t.confidence_level) << " % interval):\n\n";
         const auto &ix = r.sobol->indices.front();
-        for (std::size_t k : largest_contributors(r, 3))
-          out << "1. " << quantity_name(r.quantities[k]) << ": total " << format_number(ix.total[k]) << " ["
-              << format_number(ix.total_interval[k].lower) << ", " << format_number(ix.total_interval[k].upper)
-              << "], first order " << format_number(ix.first_order[k]) << "\n";
+        if (ix.constant_output)
+          out << "(none: no toleranced quantity moves the null shift)\n";
+        else
+          for (std::size_t k : largest_contributors(r, 3))
+            out << "1. " << quantity_name(r.quantities[k]) << ": total " << format_number(ix.total[k]) << " ["
+                << format_number(ix.total_interval[k].lower) << ", " << format_number(ix.total_interval[k].upper)
+                << "], first order " << format_number(ix.first_order[k]) << "\n";
         out << "\nEvery index, also of the null shift at the coldest and the hottest temperature: "
                "`system/sobol_indices.csv`.\n\n";
       }

@@ -133,6 +133,19 @@ namespace servodrift::system
 
   SobolIndices sobol_indices(const ToleranceParameters &t, const SampleRows &design, const std::vector<double> &output)
   {
+    // An output that no tolerance moves (e.g. only the magnets' remanence toleranced, which leaves
+    // the null of an otherwise ideal valve where it is) has no variance to share out.
+    if (std::all_of(output.begin(), output.end(), [&](double y) { return y == output.front(); }))
+      {
+        const std::size_t d = design.empty() ? 0 : design.front().size();
+        SobolIndices none;
+        none.first_order.assign(d, 0.0);
+        none.total.assign(d, 0.0);
+        none.first_order_interval.assign(d, {0.0, 0.0});
+        none.total_interval.assign(d, {0.0, 0.0});
+        none.constant_output = true;
+        return none;
+      }
     return guarded("the Sobol' indices", [&] {
       const OT::Sample X = sample_of(design);
       OT::Sample Y(output.size(), 1);

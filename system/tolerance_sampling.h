@@ -29,6 +29,8 @@ namespace servodrift::system
   {
     std::vector<double> first_order, total;          ///< per active quantity [1]
     std::vector<Interval> first_order_interval, total_interval;
+    /// The output did not vary over the design: indices undefined, written as 0
+    bool constant_output = false;
   };
   /// Indices of one output, from the design and its outputs (same row order), by the estimator of
   /// `tolerances' with its bootstrap intervals at its confidence level.

@@ -54,8 +54,8 @@ namespace servodrift
                       "reference temperature, in % of the rated current; must be > 0. Catalogues quote "
                       "about 2 % per 55 K. [%]");
     prm.declare_entry("Sobol base samples", "512", Patterns::Integer(0, 1000000),
-                      "N of the Sobol' design (N (d + 2) valves for d toleranced quantities); 0: no "
-                      "sensitivity study. [1]");
+                      "N of the Sobol' design (N (d + 2) valves for d toleranced quantities): 0 (no "
+                      "sensitivity study) or at least 64. [1]");
     prm.declare_entry("Sobol estimator", "martinez", Patterns::Selection("saltelli|jansen|martinez|mauntz-kucherenko"),
                       "Estimator of the first-order and total Sobol' indices (OpenTURNS). [-]");
     prm.declare_entry("Bootstrap size", "200", Patterns::Integer(10, 100000),

@@ -45,7 +45,7 @@ case "$which" in
     sets=(--set "Output/Plots=false" --set "Torque motor/Model level=reduced-order"
           --set "Pilot stage/Model level=reduced-order" --set "Spring tube/Model level=reduced-order"
           --set "Sweeps/Drift temperatures=40, 80, 120" --set "Sweeps/Deviation angles=0"
-          --set "Tolerances/Samples=150" --set "Tolerances/Sobol base samples=32"
+          --set "Tolerances/Samples=150" --set "Tolerances/Sobol base samples=64"
           --set "Tolerances/Left orifice diameter/Distribution=normal"
           --set "Tolerances/Left orifice diameter/Standard deviation=1e-6"
           --set "Tolerances/Magnetic null/Distribution=uniform"

@@ -280,6 +280,11 @@ TEST(SobolIndices, LinearResponseHasTheKnownDecomposition)
       EXPECT_NEAR(s.indices[0].first_order[k], exact, 0.03) << k;
       EXPECT_NEAR(s.indices[0].total[k], exact, 0.03) << k;
     }
+  // an output that nothing moves has no variance to share: flagged, not an error
+  const SobolStudy flat = sobol_study(t, {"constant"}, [](const auto &) { return std::vector<double>{1.5}; },
+                                      OutputParameters::Progress::none);
+  EXPECT_TRUE(flat.indices[0].constant_output);
+  EXPECT_EQ(flat.indices[0].total, std::vector<double>(4, 0.0));
 }
 
 // The Monte Carlo of the valve itself against first-order propagation of its own model: for small
