@@ -33,6 +33,8 @@ namespace
     std::string output;
     std::string format = "prm";
     bool calibrate = false, convergence = false;
+    std::string measured;            ///< calibrate: the measured data
+    std::vector<std::string> free;   ///< calibrate: "Subsection/Key[=lower:upper]"
   };
 
   /// --set takes one value per occurrence, so that the valve file may follow the options
@@ -178,7 +180,16 @@ namespace
     auto *tolerances = app.add_subcommand(
       "tolerances", "system model with the tolerance study (Monte Carlo of the thermal null shift, yield, Sobol' "
                     "indices), from the tables in <output>/tables");
-    for (auto *c : {run, magnetics, structure, flow, system, dynamics, tolerances})
+    auto *calibrate = app.add_subcommand(
+      "calibrate", "fit free entries of the valve description to measured drift data, from the tables in <output>/tables");
+    calibrate->add_option("measured", o.measured,
+                          "measured data (CSV: temperature[degC], current[A], measured quantities with units)")
+      ->required();
+    calibrate->add_option("--free", o.free, "a free entry, \"Subsection/Key\" or \"Subsection/Key=lower:upper\" (repeatable)")
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->take_all();
+    for (auto *c : {run, magnetics, structure, flow, system, dynamics, tolerances, calibrate})
       add_common_options(c, o);
     magnetics->add_flag("--calibrate", o.calibrate,
                         "C10: calibrate the field model's equivalent magnet width at T0 against the circuit");
@@ -220,6 +231,31 @@ namespace
       return std::string("system: fits, drift maps, ") + (a.dynamics ? "dynamics, " : "") +
              (a.tolerances ? "tolerances, " : "") + "plots, report";
     };
+    if (calibrate->parsed())
+      {
+        // everything checked before anything is written: the free entries, the measured file, the
+        // model at the starting values
+        std::vector<std::string> overrides = o.overrides;
+        overrides.push_back("Output/Directory=" + valve.output.directory);
+        const system::CalibrationRequest request{o.measured, o.free, o.input, overrides};
+        const system::StageTables tables = system::StageTables::read(tables_directory(valve), valve);
+        const system::CalibrationSetup setup = system::prepare_calibration(request, valve, tables);
+        transaction(valve, [&] {
+          system::CalibrationResults results;
+          timed("calibration (" + std::to_string(setup.parameters.size()) + " free, " +
+                  std::to_string(setup.data.points.size()) + " measured values)",
+                [&] { results = system::calibrate(request, setup, tables); });
+          std::vector<std::string> calibrated_overrides = results.calibrated_overrides;
+          calibrated_overrides.push_back("Output/Directory=" + valve.output.directory);
+          const ValveDescription calibrated = load_valve_description(o.input, calibrated_overrides);
+          system::Analyses analyses;
+          analyses.calibration = &results;
+          timed("system: fits, drift maps, plots, report of the calibrated valve", [&] { system::run(calibrated, analyses); });
+          write_parameters_file(calibrated);
+          say("results: " + valve.output.directory + "/calibration/, " + valve.output.directory + "/report.md");
+        });
+        return 0;
+      }
     transaction(valve, [&] {
       if (system->parsed() || dynamics->parsed() || tolerances->parsed())
         {

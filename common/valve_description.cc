@@ -10,6 +10,7 @@
 #include <boost/property_tree/ptree.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 
 namespace servodrift
@@ -134,6 +135,85 @@ namespace servodrift
     v.parameters_sha256 = sha256_hex(hashed_text(prm));
     validate(v);
     return v;
+  }
+
+  ValveDescriptionVariants::ValveDescriptionVariants(const std::string &input_file,
+                                                     const std::vector<std::string> &overrides)
+    : prm(std::make_unique<ParameterHandler>())
+    , source(input_file.empty() ? "built-in RV-1" : input_file)
+  {
+    fill(*prm, input_file, overrides);
+  }
+
+  ValveDescriptionVariants::~ValveDescriptionVariants() = default;
+
+  ValveDescription ValveDescriptionVariants::with(const std::vector<std::pair<std::string, std::string>> &entries)
+  {
+    for (const auto &[path, value] : entries)
+      {
+        std::vector<std::string> parts;
+        std::stringstream items(path);
+        for (std::string part; std::getline(items, part, '/');)
+          parts.push_back(part);
+        for (std::size_t k = 0; k + 1 < parts.size(); ++k)
+          prm->enter_subsection(parts[k]);
+        try
+          {
+            prm->set(parts.back(), value);
+          }
+        catch (const dealii::ExceptionBase &)
+          {
+            for (std::size_t k = 0; k + 1 < parts.size(); ++k)
+              prm->leave_subsection();
+            throw InputError("`" + shown_input(path) + "' = " + shown_input(value) + " is not allowed");
+          }
+        for (std::size_t k = 0; k + 1 < parts.size(); ++k)
+          prm->leave_subsection();
+      }
+    ValveDescription v;
+    parse_all(*prm, v);
+    v.source = source;
+    validate(v);
+    return v;
+  }
+
+  NumericEntry numeric_entry(const std::string &input_file, const std::vector<std::string> &overrides,
+                             const std::string &path)
+  {
+    ParameterHandler prm;
+    fill(prm, input_file, overrides);
+    std::ostringstream json;
+    prm.print_parameters(json, style(ParameterHandler::JSON));
+    std::istringstream in(json.str());
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_json(in, tree);
+    const boost::property_tree::ptree *node = &tree;
+    std::stringstream parts(path);
+    for (std::string part; std::getline(parts, part, '/');)
+      {
+        const auto child = node->find(part);
+        if (child == node->not_found())
+          throw InputError("`" + shown_input(path) + "' is not an entry of the valve description (`servodrift params' "
+                                                     "lists every entry)");
+        node = &child->second;
+      }
+    if (!node->get_child_optional("value"))
+      throw InputError("`" + shown_input(path) + "' is a subsection, not an entry");
+    // "[Double -0.0001...0.0001 (inclusive)]" or "[Integer 1...10000000 (inclusive)]"
+    const std::string pattern = node->get<std::string>("pattern_description", "");
+    double lower = 0, upper = 0;
+    const std::size_t space = pattern.find(' '), dots = pattern.find("...");
+    const std::string kind = pattern.substr(1, space == std::string::npos ? 0 : space - 1);
+    if ((kind != "Double" && kind != "Integer") || dots == std::string::npos)
+      throw InputError("`" + shown_input(path) + "' is not a number (allowed: " + pattern + ")");
+    lower = std::strtod(pattern.c_str() + space + 1, nullptr); // "-10." would take a dot of "..."
+    upper = std::strtod(pattern.c_str() + dots + 3, nullptr);
+    NumericEntry e{path, std::stod(node->get<std::string>("value")), lower, upper, ""};
+    const std::string doc = node->get<std::string>("documentation", "");
+    const auto open = doc.rfind('[');
+    if (open != std::string::npos && doc.back() == ']')
+      e.unit = doc.substr(open + 1, doc.size() - open - 2);
+    return e;
   }
 
   std::string print_parameters(const std::string &input_file, const std::vector<std::string> &overrides,

@@ -4,6 +4,7 @@
 #include "common/units.h"
 #include "common/version.h"
 #include "system/dynamics_report.h"
+#include "system/calibration_output.h"
 #include "system/tolerance_output.h"
 #include "system/system_stage.h"
 
@@ -269,6 +270,8 @@ namespace servodrift::system
       dynamics_section(out, valve, *r.dynamics);
     else
       out << "## Dynamics\n\nNot computed in this run (`Dynamics/Enabled`, or `servodrift dynamics`).\n\n";
+    if (r.calibration)
+      calibration_section(out, *r.calibration);
     if (r.tolerances)
       tolerance_section(out, valve, *r.tolerances);
     else

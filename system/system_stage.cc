@@ -11,6 +11,7 @@
 #include "system/dynamics_plots.h"
 #include "system/plots.h"
 #include "system/report.h"
+#include "system/calibration_output.h"
 #include "system/tolerance_output.h"
 
 #include <iostream>
@@ -156,7 +157,8 @@ namespace servodrift::system
 
   void run(const ValveDescription &valve, Analyses analyses)
   {
-    const SystemResults results = compute(valve, tables_directory(valve), analyses);
+    SystemResults results = compute(valve, tables_directory(valve), analyses);
+    results.calibration = analyses.calibration;
     write_fits(valve, {results.flow_force_fit});
     on_rank_zero([&] {
       for (const auto &w : results.warnings)
@@ -175,6 +177,8 @@ namespace servodrift::system
         write_dynamics_plots(valve, *results.dynamics, dir + "/plots", plots);
       if (results.tolerances)
         write_tolerance_plots(valve, *results.tolerances, dir + "/plots", plots);
+      if (results.calibration)
+        write_calibration(valve, *results.calibration, valve.output.directory + "/calibration", plots);
       write_report(valve, results, plots, valve.output.directory + "/report.md");
     });
   }

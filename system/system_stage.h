@@ -7,6 +7,7 @@
 #include "system/dynamics.h"
 #include "system/stage_coefficients.h"
 #include "system/stage_tables.h"
+#include "system/calibration.h"
 #include "system/tolerance_study.h"
 
 #include <optional>
@@ -24,6 +25,7 @@ namespace servodrift::system
     std::vector<std::string> table_producers;    ///< producer line of each table (tells the model level)
     std::optional<DynamicsResults> dynamics;     ///< when asked for (issue 23)
     std::optional<ToleranceResults> tolerances;  ///< when asked for (issue 25)
+    const CalibrationResults *calibration = nullptr; ///< the fit that made this valve (issue 26)
   };
 
   /// The analyses beyond the static ones (stage coefficients, operating points, drift maps).
@@ -31,6 +33,7 @@ namespace servodrift::system
   {
     bool dynamics = false;
     bool tolerances = false;
+    const CalibrationResults *calibration = nullptr; ///< written beside, and a section in the report
   };
 
   /// Everything, from the tables in `tables_directory', without writing anything; the dynamics

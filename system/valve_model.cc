@@ -55,6 +55,11 @@ namespace servodrift::system
     , f(tables)
   {}
 
+  ValveModel::ValveModel(const ValveDescription &valve_, const StageFunctions &functions)
+    : valve(valve_)
+    , f(functions)
+  {}
+
   ValveEquations ValveModel::equations(double T, const Offsets &offsets) const
   {
     return ValveEquations(valve, f, T, offsets);

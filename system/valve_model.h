@@ -69,6 +69,8 @@ namespace servodrift::system
   {
   public:
     ValveModel(const ValveDescription &valve, const StageTables &tables);
+    /// With the interpolants of tables already read (a calibration evaluates many descriptions).
+    ValveModel(const ValveDescription &valve, const StageFunctions &functions);
 
     /// The valve's equations at T with these offsets: what every analysis evaluates.
     ValveEquations equations(double temperature, const Offsets &offsets = {}) const;
