@@ -6,6 +6,7 @@
 #include "common/output_files.h"
 #include "common/version.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -19,6 +20,14 @@ namespace servodrift::system
       if (!std::isfinite(v))
         throw std::logic_error("calibration output: a non-finite value reached a CSV cell");
       return format_cell(v);
+    }
+
+    /// A quantity's name in a plot (gnuplot would read `_' as a subscript)
+    std::string label(MeasuredQuantity q)
+    {
+      std::string text = name(q);
+      std::replace(text.begin(), text.end(), '_', ' ');
+      return text;
     }
 
     /// The plotted unit of a quantity and its factor from SI.
@@ -120,8 +129,8 @@ namespace servodrift::system
               data << format_cell(m.temperature) << ' ' << format_cell(f * m.value) << ' ' << format_cell(f * r.weights[k]) << '\n';
           }
         data << "\n\n";
-        const std::string title = std::string(name(c.quantity)) + " at " + format_number(1e3 * c.current) + " mA";
-        commands += "set ylabel '" + std::string(name(c.quantity)) + " [" + unit + "]'\nplot 'calibration_fit.dat' index " +
+        const std::string title = "at " + format_number(1e3 * c.current) + " mA";
+        commands += "set ylabel '" + label(c.quantity) + " [" + unit + "]'\nplot 'calibration_fit.dat' index " +
                     std::to_string(block) + " using 1:3:4 with filledcurves fs transparent solid 0.3 lc 'blue' title '95 % band', '' index " +
                     std::to_string(block) + " using 1:2 with lines lw 2 lc 'blue' title 'model: " + title + "', '' index " +
                     std::to_string(block + 1) + " using 1:2:3 with yerrorbars pt 7 lc 'black' title 'measured'\n";
@@ -131,7 +140,7 @@ namespace servodrift::system
     write_file_atomically(dir + "/plots/calibration_fit.dat", data.str());
     render_plots(valve,
                  {{"calibration_fit", "set multiplot layout " + std::to_string(r.curves.size()) +
-                                        ",1 title 'Measured and calibrated model'\nset grid\nset key outside right\n"
+                                        ",1 title 'Measured and calibrated model'\nset grid\nset key top right box opaque\n"
                                         "set xlabel 'temperature [degC]'\n" + commands + "unset multiplot\n"}},
                  dir + "/plots", plots);
   }
@@ -150,10 +159,15 @@ namespace servodrift::system
           << " | " << (r.standard_errors[j] ? format_number(*r.standard_errors[j]) : "not identifiable") << " | "
           << (r.intervals[j] ? format_number(r.intervals[j]->lower) + " to " + format_number(r.intervals[j]->upper) : "-")
           << " | " << params[j].unit << " |\n";
-    out << "\nChi-square " << format_number(r.chi_square) << " on " << r.degrees_of_freedom
-        << " degrees of freedom, reduced chi-square " << format_number(r.reduced_chi_square)
-        << (r.sigma_estimated ? " (in the measured unit squared: the noise's variance)" : " (about 1 for a model that fits to the noise)")
-        << ".\n\n";
+    if (r.sigma_estimated)
+      out << "\nThe residuals' standard deviation, sqrt(chi-square/" << r.degrees_of_freedom << "), is "
+          << format_number(std::sqrt(r.reduced_chi_square)) << " " << si_unit(r.setup.data.points.front().quantity)
+          << ": the noise the intervals assume.\n\n";
+    else
+      out << "\nChi-square " << format_number(r.chi_square) << " on " << r.degrees_of_freedom
+          << " degrees of freedom, reduced chi-square " << format_number(r.reduced_chi_square)
+          << " (about 1 when the model fits to the stated noise; well above 1: the model or the standard deviations "
+             "miss something).\n\n";
     for (const auto &w : r.warnings)
       out << "**Warning:** " << w << "\n\n";
     out << "Every point: `calibration/fit.csv`; estimates, correlations: `calibration/result.json`; the valve with the "
