@@ -46,7 +46,19 @@ namespace servodrift::system
     const ValveModel model(valve, functions);
     // the valve as described, nulled by its convention (D8): what a bench measures
     const Offsets offsets = model.offsets_for_deviation(0.0);
-    std::map<std::pair<double, double>, OperatingPoint> operating_points;
+    std::map<std::pair<double, double>, OperatingPoint> operating_points, ideal_points;
+    const auto operating_point = [&](double T, double i, const Offsets &o) -> const OperatingPoint & {
+      auto found = operating_points.find({T, i});
+      if (found == operating_points.end())
+        found = operating_points.emplace(std::make_pair(T, i), model.solve(T, i, o)).first;
+      return found->second;
+    };
+    const auto ideal_point = [&](double T, double i) -> const OperatingPoint & {
+      auto found = ideal_points.find({T, i});
+      if (found == ideal_points.end())
+        found = ideal_points.emplace(std::make_pair(T, i), model.solve(T, i, Offsets{})).first;
+      return found->second;
+    };
     std::map<double, double> null_shift;
     std::vector<double> y;
     for (const Measurement &p : points)
@@ -65,16 +77,26 @@ namespace servodrift::system
             y.push_back(found->second);
             continue;
           }
-        const auto key = std::make_pair(p.temperature, p.current);
-        auto found = operating_points.find(key);
-        if (found == operating_points.end())
-          found = operating_points.emplace(key, model.solve(p.temperature, p.current, offsets)).first;
-        const OperatingPoint &op = found->second;
+        const OperatingPoint &op = operating_point(p.temperature, p.current, offsets);
+        const bool deviation = p.quantity == MeasuredQuantity::spool_displacement_deviation ||
+                               p.quantity == MeasuredQuantity::brake_pressure_deviation;
+        // D9: the reference of a deviation, by the description's convention
+        const OperatingPoint *reference = nullptr;
+        if (deviation)
+          reference = valve.offsets.nulling == OffsetParameters::Nulling::nulled_at_reference ?
+                        &operating_point(valve.operating.reference_temperature, p.current, offsets) :
+                        &ideal_point(p.temperature, p.current);
         switch (p.quantity)
           {
             case MeasuredQuantity::brake_pressure: y.push_back(op.spool.brake_pressure); break;
             case MeasuredQuantity::control_pressure_difference: y.push_back(op.control_pressure_difference()); break;
             case MeasuredQuantity::spool_displacement: y.push_back(op.spool.displacement); break;
+            case MeasuredQuantity::spool_displacement_deviation:
+              y.push_back(op.spool.displacement - reference->spool.displacement);
+              break;
+            case MeasuredQuantity::brake_pressure_deviation:
+              y.push_back(op.spool.brake_pressure - reference->spool.brake_pressure);
+              break;
             case MeasuredQuantity::null_shift_current: break;
           }
       }

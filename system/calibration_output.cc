@@ -36,7 +36,8 @@ namespace servodrift::system
       switch (q)
         {
           case MeasuredQuantity::null_shift_current: return {"mA", 1e3};
-          case MeasuredQuantity::spool_displacement: return {"um", 1e6};
+          case MeasuredQuantity::spool_displacement:
+          case MeasuredQuantity::spool_displacement_deviation: return {"um", 1e6};
           default: return {"MPa", 1e-6};
         }
     }

@@ -20,6 +20,8 @@ namespace servodrift::system
         case MeasuredQuantity::brake_pressure: return "brake_pressure";
         case MeasuredQuantity::control_pressure_difference: return "control_pressure_difference";
         case MeasuredQuantity::spool_displacement: return "spool_displacement";
+        case MeasuredQuantity::spool_displacement_deviation: return "spool_displacement_deviation";
+        case MeasuredQuantity::brake_pressure_deviation: return "brake_pressure_deviation";
       }
     return "?";
   }
@@ -29,7 +31,8 @@ namespace servodrift::system
     switch (q)
       {
         case MeasuredQuantity::null_shift_current: return "A";
-        case MeasuredQuantity::spool_displacement: return "m";
+        case MeasuredQuantity::spool_displacement:
+        case MeasuredQuantity::spool_displacement_deviation: return "m";
         default: return "Pa";
       }
   }
@@ -37,8 +40,9 @@ namespace servodrift::system
   namespace
   {
     const std::vector<MeasuredQuantity> all_quantities = {
-      MeasuredQuantity::null_shift_current, MeasuredQuantity::brake_pressure,
-      MeasuredQuantity::control_pressure_difference, MeasuredQuantity::spool_displacement};
+      MeasuredQuantity::null_shift_current,           MeasuredQuantity::brake_pressure,
+      MeasuredQuantity::control_pressure_difference,  MeasuredQuantity::spool_displacement,
+      MeasuredQuantity::spool_displacement_deviation, MeasuredQuantity::brake_pressure_deviation};
 
     /// Factor to SI of a unit a bench report may use for a quantity of SI unit `si'.
     std::optional<double> to_si(const std::string &unit, const std::string &si)
@@ -136,7 +140,8 @@ namespace servodrift::system
                       refuse(number, "column `" + shown_input(h, 40) +
                                        "' is not a measured quantity (allowed: temperature[degC], current[A], "
                                        "null_shift_current, brake_pressure, control_pressure_difference, "
-                                       "spool_displacement, each optionally with <name>_sd)");
+                                       "spool_displacement and the _deviation of the last and of brake_pressure, "
+                                       "each optionally with <name>_sd)");
                   }
               }
             if (!temperature || !current)

@@ -13,7 +13,12 @@ namespace servodrift::system
     null_shift_current,          ///< the current that restores p_L = p_R [A]
     brake_pressure,              ///< p_B, gauge [Pa]
     control_pressure_difference, ///< p_L - p_R [Pa]
-    spool_displacement           ///< x_v [m]
+    spool_displacement,          ///< x_v [m]
+    /// D9 deviations (E40): from the ideal valve (no offsets, no asymmetry) at the same temperature
+    /// and current (as assembled), or from the same valve at the reference temperature (nulled at
+    /// reference); the paper's drift measures
+    spool_displacement_deviation, ///< [m]
+    brake_pressure_deviation      ///< [Pa]
   };
   const char *name(MeasuredQuantity q);
   const char *si_unit(MeasuredQuantity q);

@@ -136,7 +136,9 @@ TEST(Calibration, NoisyDataCoverTheTruth)
           ASSERT_TRUE(c.intervals[j]);
           covered[j] += c.intervals[j]->lower <= two_truth[j] && two_truth[j] <= c.intervals[j]->upper;
           if (d == 0)
-            EXPECT_LT(std::abs(c.estimates[j] - two_truth[j]), 2 * *c.standard_errors[j]) << j;
+            {
+              EXPECT_LT(std::abs(c.estimates[j] - two_truth[j]), 2 * *c.standard_errors[j]) << j;
+            }
         }
     }
   for (std::size_t j = 0; j < 2; ++j)
