@@ -3,6 +3,8 @@
 // over repeated noise draws, and parameters that act identically reported as not identifiable.
 #include "system/calibration.h"
 #include "system/calibration_model.h"
+#include "system/drift_map.h"
+#include "system/valve_model.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -165,4 +167,29 @@ TEST(Calibration, IdenticalParametersAreNotIdentifiable)
   EXPECT_NE(c.warnings.front().find("cannot tell apart"), std::string::npos) << c.warnings.front();
   // what the data do determine, the mean, is found
   EXPECT_NEAR(0.5 * (c.estimates[0] + c.estimates[1]), 0.01, 1e-6);
+}
+
+// The D9 deviations the calibration can fit are the drift map's: a valve with theta_m = 0.01 deg,
+// nulled at 40 degC, against the drift map's point at the deviation angle 0.01 deg (which drives
+// theta_m), at every drift temperature.
+TEST(Calibration, DeviationsAreTheDriftMapsOnes)
+{
+  const std::vector<std::string> map_overrides = {"Sweeps/Deviation angles=0, 0.01", "Sweeps/Drift temperatures=40, 80, 120"};
+  ValveDescription v = test::valve(map_overrides);
+  const ValveModel model(v, bench().tables);
+  const DriftMap map = compute_drift_map(model, OutputParameters::Progress::none);
+  std::vector<Measurement> points;
+  for (double T : {40.0, 80.0, 120.0})
+    {
+      points.push_back({0, T, 0.0, MeasuredQuantity::spool_displacement_deviation, 0.0, 1.0});
+      points.push_back({0, T, 0.02, MeasuredQuantity::brake_pressure_deviation, 0.0, 1.0});
+    }
+  const std::vector<double> y = truth_values({"Offsets/Magnetic null"}, {0.01}, points);
+  for (std::size_t t = 0; t < 3; ++t)
+    {
+      const DriftPoint &p = map.at(t, 1);
+      ASSERT_NEAR(p.deviation_angle, 0.01 * M_PI / 180, 1e-18);
+      EXPECT_NEAR(y[2 * t], p.spool_displacement_deviation, 1e-12) << p.temperature; // m
+      EXPECT_NEAR(y[2 * t + 1], p.brake_pressure_deviation, 1e-3) << p.temperature;  // Pa
+    }
 }
