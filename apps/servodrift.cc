@@ -239,7 +239,7 @@ namespace
         overrides.push_back("Output/Directory=" + valve.output.directory);
         const system::CalibrationRequest request{o.measured, o.free, o.input, overrides};
         const system::StageTables tables = system::StageTables::read(tables_directory(valve), valve);
-        const system::CalibrationSetup setup = system::prepare_calibration(request, valve, tables);
+        const system::CalibrationSetup setup = system::prepare_calibration(request, tables);
         transaction(valve, [&] {
           system::CalibrationResults results;
           timed("calibration (" + std::to_string(setup.parameters.size()) + " free, " +

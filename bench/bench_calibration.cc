@@ -74,7 +74,7 @@ int main(int argc, char **argv)
   const system::CalibrationRequest request{file, free, "", overrides};
   system::CalibrationResults result;
   const auto t = time_it(repetitions, [&] {
-    const auto setup = system::prepare_calibration(request, valve, tables);
+    const auto setup = system::prepare_calibration(request, tables);
     result = system::calibrate(request, setup, tables);
   });
   std::cout << "calibration, 4 free parameters, 20 measured values: min " << t.first << " s, median " << t.second

@@ -134,8 +134,7 @@ namespace servodrift::system
     };
   } // namespace
 
-  CalibrationSetup prepare_calibration(const CalibrationRequest &request, const ValveDescription &valve,
-                                       const StageTables &tables)
+  CalibrationSetup prepare_calibration(const CalibrationRequest &request, const StageTables &tables)
   {
     CalibrationSetup s;
     std::set<std::string> seen;
@@ -186,7 +185,6 @@ namespace servodrift::system
       {
         throw InputError(std::string("calibrate: at the starting values: ") + e.what());
       }
-    (void)valve;
     return s;
   }
 

@@ -37,8 +37,7 @@ namespace servodrift::system
     std::vector<FreeParameter> parameters;
     MeasuredData data;
   };
-  CalibrationSetup prepare_calibration(const CalibrationRequest &request, const ValveDescription &valve,
-                                       const StageTables &tables);
+  CalibrationSetup prepare_calibration(const CalibrationRequest &request, const StageTables &tables);
 
   /// The model along temperature for one measured series (quantity, current), for the plot.
   struct ModelCurve

@@ -103,7 +103,7 @@ TEST(Calibration, NoiseFreeDataGiveTheTruth)
   const auto points = bench_points(true);
   const std::string file = write_measured(points, truth_values(two_free, two_truth, points));
   const CalibrationRequest r = request(file, two_free);
-  const CalibrationSetup setup = prepare_calibration(r, bench().valve, bench().tables);
+  const CalibrationSetup setup = prepare_calibration(r, bench().tables);
   const CalibrationResults c = calibrate(r, setup, bench().tables);
   for (std::size_t j = 0; j < 2; ++j)
     {
@@ -132,7 +132,7 @@ TEST(Calibration, NoisyDataCoverTheTruth)
       for (std::size_t k = 0; k < y.size(); ++k)
         y[k] += points[k].standard_deviation * gauss(random);
       const CalibrationRequest r = request(write_measured(points, y), two_free);
-      const CalibrationResults c = calibrate(r, prepare_calibration(r, bench().valve, bench().tables), bench().tables);
+      const CalibrationResults c = calibrate(r, prepare_calibration(r, bench().tables), bench().tables);
       for (std::size_t j = 0; j < 2; ++j)
         {
           ASSERT_TRUE(c.intervals[j]);
@@ -159,7 +159,7 @@ TEST(Calibration, IdenticalParametersAreNotIdentifiable)
   const auto points = bench_points(true);
   const std::string file = write_measured(points, truth_values(free, {0.01, 0.01}, points));
   const CalibrationRequest r = request(file, free);
-  const CalibrationResults c = calibrate(r, prepare_calibration(r, bench().valve, bench().tables), bench().tables);
+  const CalibrationResults c = calibrate(r, prepare_calibration(r, bench().tables), bench().tables);
   EXPECT_EQ(c.not_identifiable.size(), 2u);
   EXPECT_FALSE(c.standard_errors[0]);
   EXPECT_FALSE(c.standard_errors[1]);
