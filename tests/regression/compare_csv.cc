@@ -1,13 +1,17 @@
-// compare_csv REFERENCE RESULT [RELATIVE [FLOOR]]: compares two servodrift CSV outputs cell by cell,
-// ignoring '#' header lines (they carry the producer's git revision). Text cells must match exactly;
-// a number b matches its reference a if |b - a| <= RELATIVE |a| + FLOOR max|column of a|.
+// compare_csv [--ignore COLUMN]... REFERENCE RESULT [RELATIVE [FLOOR]]: compares two servodrift CSV
+// outputs cell by cell, ignoring '#' header lines (they carry the producer's git revision) and the
+// columns named by --ignore (by their header, e.g. `wall_time[s]': what a run cannot reproduce).
+// Text cells must match exactly; a number b matches its reference a if
+// |b - a| <= RELATIVE |a| + FLOOR max|column of a|.
 // Defaults: RELATIVE = 1e-6, FLOOR = 1e-9 (the static solver's root tolerances are 1e-10 of the
 // pressure span and 1e-13 of the angle bracket; deviations are differences of such results).
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -49,13 +53,32 @@ namespace
 
 int main(int argc, char **argv)
 {
-  if (argc < 3)
+  std::set<std::string> ignored;
+  std::vector<const char *> positional;
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--ignore" && i + 1 < argc)
+      ignored.insert(argv[++i]);
+    else
+      positional.push_back(argv[i]);
+  if (positional.size() < 2)
     {
-      std::cerr << "usage: compare_csv REFERENCE RESULT [RELATIVE [FLOOR]]\n";
+      std::cerr << "usage: compare_csv [--ignore COLUMN]... REFERENCE RESULT [RELATIVE [FLOOR]]\n";
       return 2;
     }
-  const double relative = argc > 3 ? std::atof(argv[3]) : 1e-6, floor = argc > 4 ? std::atof(argv[4]) : 1e-9;
-  const auto a = read(argv[1]), b = read(argv[2]);
+  const double relative = positional.size() > 2 ? std::atof(positional[2]) : 1e-6,
+               floor = positional.size() > 3 ? std::atof(positional[3]) : 1e-9;
+  const auto a = read(positional[0]), b = read(positional[1]);
+  if (a.empty())
+    {
+      std::cerr << positional[0] << ": no rows\n";
+      return 1;
+    }
+  for (const auto &name : ignored)
+    if (std::find(a[0].begin(), a[0].end(), name) == a[0].end())
+      {
+        std::cerr << "--ignore " << name << ": no such column in " << positional[0] << "\n";
+        return 2;
+      }
   if (a.size() != b.size())
     {
       std::cerr << "row count " << b.size() << " differs from the reference's " << a.size() << "\n";
@@ -80,6 +103,8 @@ int main(int argc, char **argv)
         }
       for (std::size_t c = 0; c < a[r].size(); ++c)
         {
+          if (ignored.count(a[0][c]))
+            continue;
           double x, y;
           const bool ok = number(a[r][c], x) && number(b[r][c], y) ?
                             std::abs(y - x) <= relative * std::abs(x) + floor * column_max[c] :

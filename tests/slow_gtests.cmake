@@ -1,0 +1,7 @@
+# The gtest cases that take 20 s or more on the 2-core machine: labelled `slow' as well (ctest
+# includes this file after it has discovered the tests; tests/CMakeLists.txt).
+foreach(name PilotFieldStage.OrificePathOverTemperatureKeepsTheAnswer Calibration.NoisyDataCoverTheTruth
+             PilotField.MeshConvergence PilotField.FixedOrificeFollowsLichtarowiczWithKEpsilon
+             PilotField.CaughtCyclesLeaveTheAnswerUnchanged PilotField.GridSequencingKeepsTheFineMeshAnswer)
+  set_tests_properties(${name} PROPERTIES LABELS "verification;slow")
+endforeach()
