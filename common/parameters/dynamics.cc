@@ -14,9 +14,9 @@ namespace servodrift
                       "`servodrift dynamics' runs them whatever this says. [-]");
     prm.declare_entry("Bias", "0.5", Patterns::Double(-1, 1),
                       "Bias current of the linearisation, the small step and the sine inputs, as a "
-                      "fraction of the rated current. At 0 RV-1's spool sits vented on its spring; from "
-                      "about 0.3 % of rated on it regulates in its lap, where the linearisation means "
-                      "something (issue 23). [1]");
+                      "fraction of the rated current. At 0 RV-1's spool sits vented on its spring; the bias "
+                      "must be large enough for it to regulate in its lap, where the linearisation means "
+                      "something (doc/method.md, issue 23). [1]");
     prm.declare_entry("Small step", "0.05", Patterns::Double(1e-6, 1),
                       "Height of the small step from the bias, as a fraction of the rated current. [1]");
     prm.declare_entry("Step duration", "0", Patterns::Double(0, 100),

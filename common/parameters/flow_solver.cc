@@ -19,32 +19,31 @@ namespace servodrift
     prm.declare_entry("Pressure relaxation", "0.7", Patterns::Double(0.01, 1),
                       "Under-relaxation of the pressure correction. SIMPLEC needs none (1) between a "
                       "velocity inlet and an outlet; between pressure boundaries (the valve's cases) it "
-                      "settles into a two-iteration cycle without, which 0.7 removes. [1]");
+                      "settles into a two-iteration cycle without, which the default removes (doc/method.md). [1]");
     prm.declare_entry("Pressure-velocity coupling", "simplec-then-coupled",
                       Patterns::Selection("simplec|coupled|simplec-then-coupled"),
                       "simplec: segregated (momentum, then the pressure correction; the paper's choice). "
                       "coupled: momentum and continuity (Rhie-Chow fluxes, implicit pressure gradient) as one "
                       "linear system in u, v and p per outer iteration, solved by UMFPACK LU: the same discrete "
-                      "equations, so the same converged fields, in fewer iterations (RV-1's null: 385 against "
-                      "616) that cost 7-8 times as much. simplec-then-coupled: SIMPLEC, and where it stalls "
+                      "equations, so the same converged fields, in fewer but much costlier iterations "
+                      "(doc/changes.md, issue 5). simplec-then-coupled: SIMPLEC, and where it stalls "
                       "(`Stall window') coupled iterations from there, judged on the `Cycle window'; it converges "
-                      "cases whose SIMPLEC is caught in a cycle (doc/method.md, doc/performance.md). [-]");
+                      "cases whose SIMPLEC is caught in a cycle (doc/method.md, doc/changes.md). [-]");
     prm.declare_entry("Momentum solver", "bicgstab-jacobi",
                       Patterns::Selection("bicgstab-jacobi|bicgstab-gauss-seidel|bicgstab-ilu|direct"),
                       "Linear solver of the momentum, k and epsilon equations: BiCGSTAB (Eigen) preconditioned "
                       "by Jacobi, by a symmetric Gauss-Seidel sweep or by an incomplete LU (ILUT), or UMFPACK LU "
                       "with its symbolic analysis once per mesh (SuiteSparse; momentum only, k and epsilon then "
-                      "take the Jacobi BiCGSTAB). Gauss-Seidel needs 3 BiCGSTAB iterations per solve where "
-                      "Jacobi needs 12, but each costs more: on the valve's field sweep the two take the same time "
-                      "(doc/performance.md); bench/bench_flow measures them. [-]");
+                      "take the Jacobi BiCGSTAB). Gauss-Seidel needs fewer BiCGSTAB iterations per solve than "
+                      "Jacobi, but each costs more; bench/bench_flow compares them (doc/changes.md, issue 4). [-]");
     prm.declare_entry("Linear solver tolerance", "1e-3", Patterns::Double(1e-12, 0.5),
                       "BiCGSTAB (momentum, k, epsilon) stops when the residual of the correction has fallen by "
-                      "this factor: an outer iteration needs its linearised equations solved only loosely. "
-                      "Measured on the valve's field sweep (doc/performance.md): 1e-2 takes 20 % less CPU time "
-                      "on the orifice, 6 % on the nozzle, but two more nozzle cases stall and the laminar "
-                      "cavitating rows land 0.5-2 % apart (another of their steady solutions); 1e-1 doubles the "
-                      "outer iterations (Anderson acceleration needs the same map from one iteration to the "
-                      "next). The pressure correction is always solved to round-off, for mass conservation. [1]");
+                      "this factor: an outer iteration needs its linearised equations solved only loosely. A "
+                      "looser tolerance saves time per iteration, but more cases stall, laminar cavitating cases "
+                      "can land on another of their steady solutions, and the outer iterations grow, since "
+                      "Anderson acceleration needs the same map from one iteration to the next "
+                      "(doc/changes.md, issue 5). "
+                      "The pressure correction is always solved to round-off, for mass conservation. [1]");
     prm.declare_entry("Tolerance", "1e-6", Patterns::Double(1e-15, 1),
                       "The run converges when the scaled residuals of both momentum equations and of "
                       "continuity fall below this. [1]");
@@ -81,9 +80,10 @@ namespace servodrift
     prm.declare_entry("Turbulence relaxation", "0.9", Patterns::Double(0.01, 1),
                       "Under-relaxation of the k and epsilon equations. [1]");
     prm.declare_entry("Turbulent viscosity relaxation", "0.5", Patterns::Double(0.01, 1),
-                      "Under-relaxation of the turbulent viscosity mu_t between iterations. Above about 0.7 "
-                      "the momentum-mu_t coupling of the valve's cases settles into a two-iteration cycle "
-                      "whose mass imbalance never falls below 1e-3 (doc/method.md). [1]");
+                      "Under-relaxation of the turbulent viscosity mu_t between iterations. Too weak a "
+                      "relaxation (values well above the default) lets the momentum-mu_t coupling of the "
+                      "valve's cases settle into a two-iteration cycle whose mass imbalance stops falling "
+                      "(doc/method.md). [1]");
     prm.declare_entry("Vapour density ratio", "1e-3", Patterns::Double(1e-8, 0.5),
                       "Where a stage models cavitation: density of the vapour in a cavitating cell over the "
                       "liquid's. The real ratio is about 1e-5; at 1e-3 the vapour's momentum is still "

@@ -12,8 +12,8 @@ namespace servodrift
     prm.declare_entry("Model level", "field", Patterns::Selection("reduced-order|field"),
                       "Which model computes the fixed_orifice and nozzle_flapper tables (D13): "
                       "'reduced-order' is E21-E23; 'field' is the axisymmetric finite-volume solution of "
-                      "meshes/fixed_orifice.geo and meshes/nozzle_flapper.geo (4.2, D11), about 5 min on "
-                      "2 cores for the default sweep (doc/performance.md). [-]");
+                      "meshes/fixed_orifice.geo and meshes/nozzle_flapper.geo (4.2, D11), the costlier of the "
+                      "two (doc/performance.md). [-]");
     prm.declare_entry("Fixed orifice diameter", "0.225e-3", Patterns::Double(0, 0.1),
                       "Bore diameter D_0 of each fixed (inlet) orifice (E17, E31). [m]");
     prm.declare_entry("Fixed orifice length", "0.50e-3", Patterns::Double(0, 0.1),
@@ -47,28 +47,26 @@ namespace servodrift
                       "Field level: largest ratio of successive pressure levels on a case's solution "
                       "path (from its start-up or the last converged case to its own pressure "
                       "difference; larger steps go through geometric intermediate levels). Laminar "
-                      "cavitating nozzle cases have more than one steady solution, and a step of 6 or "
-                      "more from the start-up can land on a cavity that chokes the curtain, 5-7 % below "
-                      "the quasi-static C_dn; steps of 3 or less follow the quasi-static branch "
+                      "cavitating nozzle cases have more than one steady solution, and too large a step "
+                      "from the start-up can land on a cavity that chokes the curtain, below the "
+                      "quasi-static C_dn; small enough steps follow the quasi-static branch "
                       "(doc/validation.md). [1]");
     prm.declare_entry("Field turbulent viscosity limit", "0.1", Patterns::Double(1e-6, 1e6),
                       "Field level, k-epsilon: the largest turbulent viscosity on a case's solution path, "
                       "mu_t/mu as a multiple of the case's ideal-velocity Reynolds number (E17 for the "
                       "orifice, 2 h sqrt(2 dp/rho)/nu for the nozzle). A round jet's mu_t/mu is about "
                       "0.015 Re (Pope 2000, 5.1). It bounds transients only: a case that converges with "
-                      "mu_t at the limit in any cell is flagged as not converged. Scaled up from 15.45 to "
-                      "20.6 MPa, RV-1's orifice at 120 degC grows a transient cavity in which the model's "
-                      "mu_t reaches 1e5 mu within 5 iterations (261 mu converged) and stalls; with the "
-                      "limit it converges directly (doc/performance.md). [1]");
+                      "mu_t at the limit in any cell is flagged as not converged. Without it, a transient "
+                      "cavity can drive the model's mu_t orders of magnitude above its converged value "
+                      "and stall the case (doc/changes.md, issue 5). [1]");
     prm.declare_entry("Field plenum size", "6", Patterns::Double(2, 100),
                       "Field level: radius and length of the fixed orifice's upstream plenum, in bore "
                       "radii D_0/2. [1]");
     prm.declare_entry("Field chamber length", "30", Patterns::Double(4, 1000),
                       "Field level: length of the fixed orifice's downstream chamber (radius 8 bore "
                       "radii), in bore radii D_0/2; the chamber ends in a wall and the outlet is its "
-                      "side. With 20 the wall jet's recirculation at the outlet corner cycled in 4 of "
-                      "the default sweep's 45 cases, with 30 in 1; C_d moves by 0.15 % at most "
-                      "(doc/validation.md). [1]");
+                      "side. A shorter chamber lets the wall jet's recirculation at the outlet corner "
+                      "cycle in more cases; C_d depends little on the length (doc/validation.md). [1]");
     prm.declare_entry("Field outlet radius", "4", Patterns::Double(1.5, 100),
                       "Field level: radius of the nozzle-flapper case's radial outlet (return "
                       "pressure), in land radii D_land/2. [1]");
@@ -76,9 +74,8 @@ namespace servodrift
                       "Field level: the cases model cavitation (equilibrium, mass-conserving: no absolute "
                       "pressure below `Fluid/Vapour pressure'; a cell that would go below holds it and its "
                       "liquid fraction carries the mass). Without it (single-phase, D11 as printed) the "
-                      "suction ring at the land's inner edge reaches tens of MPa below zero absolute at "
-                      "RV-1's pressures (C12) and the flapper force and C_dn follow that unphysical "
-                      "suction. [-]");
+                      "suction ring at the land's inner edge falls far below zero absolute at RV-1's "
+                      "pressures (C12) and the flapper force and C_dn follow that unphysical suction. [-]");
     const char *models = "automatic|laminar|k-epsilon|k-epsilon-launder-sharma";
     prm.declare_entry("Fixed orifice flow model", "automatic", Patterns::Selection(models),
                       "Field level: flow model of the fixed-orifice cases (D11): laminar, k-epsilon (the "
@@ -87,25 +84,26 @@ namespace servodrift
                       "Reynolds number (E17, ideal velocity), k-epsilon from it. [-]");
     prm.declare_entry("Fixed orifice transition Reynolds number", "1000", Patterns::Double(0, 1e9),
                       "Field level, automatic flow model: Re_0 (E17) from which the fixed orifice runs "
-                      "k-epsilon. Below about 1000 the laminar solution is steady and follows "
+                      "k-epsilon. Below the default the laminar solution is steady and follows "
                       "Lichtarowicz (E21); above, it stops converging (the jet is unsteady) while the "
-                      "two-layer model still gives the laminar C_d at 1000-1400 (doc/validation.md). [1]");
+                      "two-layer model still gives the laminar C_d just above the transition "
+                      "(doc/validation.md). [1]");
     prm.declare_entry("Nozzle flow model", "k-epsilon", Patterns::Selection(models),
                       "Field level: flow model of the nozzle-flapper cases (D11), as for the fixed "
                       "orifice; automatic switches at the nozzle transition Reynolds number. k-epsilon "
                       "for every case (the paper's model) keeps the flapper force smooth in gap and "
                       "temperature: with automatic, the cases around the null change model with "
-                      "temperature and K_f(T) jumps by 12 % (doc/validation.md). [-]");
+                      "temperature and K_f(T) jumps (doc/validation.md). [-]");
     prm.declare_entry("Nozzle transition Reynolds number", "2000", Patterns::Double(0, 1e9),
                       "Field level, automatic flow model: the ideal-velocity gap Reynolds number 2 h "
                       "sqrt(2 dp/rho)/nu from which the nozzle-flapper case runs k-epsilon. [1]");
     prm.declare_entry("Nozzle stall window", "250", Patterns::Integer(0, 10000000),
                       "Field level: `Flow solver/Stall window' for the nozzle-flapper cases (the fixed "
                       "orifice keeps the Flow solver's). Their SIMPLEC stalls are flat plateaus (cells at a "
-                      "cavity's edge flickering between liquid and vapour, continuity near 1e-2) that the "
-                      "coupled iterations, cheap on the nozzle's small mesh, converge in about 100; with "
-                      "1000 such a case waited 2 000 iterations, with 250 about 500, the same answer. On "
-                      "the orifice the same window made the sweep slower (doc/performance.md). 0: never. [1]");
+                      "cavity's edge flickering between liquid and vapour) that the coupled iterations, "
+                      "cheap on the nozzle's small mesh, converge quickly; a shorter window switches to "
+                      "them sooner, with the same answer. On the orifice a window this short makes the "
+                      "sweep slower (doc/changes.md, issue 5). 0: never. [1]");
     prm.declare_entry("Fixed orifice law", "lichtarowicz", Patterns::Selection("lichtarowicz|paper-fit"),
                       "Reduced-order fixed-orifice discharge coefficient: lichtarowicz (E21, RV-1) or "
                       "paper-fit (the paper's cubic E26 in Re_0, clamped to its window Re_0 in "

@@ -89,8 +89,8 @@ namespace servodrift
     prm.declare_entry("Field magnet width", "4.852e-3", Patterns::Double(0, 0.1),
                       "In-plane width of each equivalent magnet block at T0 (D10): RV-1's value is "
                       "calibrated (C10, `servodrift magnetics --calibrate') so that the field model's mean "
-                      "working-gap flux density at null equals the circuit's 0.549 T; uncalibrated, "
-                      "A_m/w_d = 6.25 mm (4.1). [m]");
+                      "working-gap flux density at null equals the circuit's (doc/method.md); "
+                      "uncalibrated, A_m/w_d = 6.25 mm (4.1). [m]");
     prm.declare_entry("Field magnet clearance", "2.2e-3", Patterns::Double(0, 0.1),
                       "Distance from the outer edge of the pole tips to the magnet blocks (field model). "
                       "[m]");
