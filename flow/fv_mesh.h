@@ -14,6 +14,10 @@ namespace servodrift::flow
 {
   using Vector2 = Eigen::Vector2d;
 
+  /// A positive floor for denominators that can vanish (a sum of magnitudes, a length scale, a
+  /// throughput): far below any value the flow can have, far above the smallest normal double.
+  constexpr double vanishing = 1e-300;
+
   enum class Geometry
   {
     planar,       ///< unit depth
@@ -65,6 +69,52 @@ namespace servodrift::flow
     std::vector<double> face_area;    ///< length (planar) or int r ds (axisymmetric)
     std::vector<int> face_patch;      ///< boundary patch, -1 inside
     double face_weight(std::size_t f) const { return weight[f]; } ///< owner's share of linear interpolation
+    /// Linear interpolation of a cell field to the interior face f: w phi_P + (1 - w) phi_N.
+    template <typename T>
+    T interpolate(std::size_t f, const std::vector<T> &field) const
+    {
+      const double w = weight[f];
+      return w * field[owner[f]] + (1 - w) * field[std::size_t(neighbour[f])];
+    }
+    /// n . d of the interior face f: the normal distance between its owner's and its neighbour's
+    /// centres (d from owner to neighbour).
+    double normal_distance(std::size_t f) const
+    {
+      return face_normal[f].dot(cell_center[std::size_t(neighbour[f])] - cell_center[owner[f]]);
+    }
+    /// The normal distance from the owner's centre to the face (the one-sided difference of a
+    /// boundary face).
+    double distance_to_face(std::size_t f) const
+    {
+      return (face_center[f] - cell_center[owner[f]]).dot(face_normal[f]);
+    }
+
+    /// The face loops, in face order: interior(f, P, N) for a face between owner P and neighbour N,
+    /// boundary(f, P) for a boundary face of P. One loop over both kinds where a cell's sums collect
+    /// from both, so that they add up in the same order whatever the kind of each face.
+    template <typename Interior, typename Boundary>
+    void for_each_face(Interior &&interior, Boundary &&boundary) const
+    {
+      for (std::size_t f = 0; f < n_faces(); ++f)
+        if (neighbour[f] >= 0)
+          interior(f, owner[f], static_cast<unsigned int>(neighbour[f]));
+        else
+          boundary(f, owner[f]);
+    }
+    template <typename Interior>
+    void for_each_interior_face(Interior &&interior) const
+    {
+      for (std::size_t f = 0; f < n_faces(); ++f)
+        if (neighbour[f] >= 0)
+          interior(f, owner[f], static_cast<unsigned int>(neighbour[f]));
+    }
+    template <typename Boundary>
+    void for_each_boundary_face(Boundary &&boundary) const
+    {
+      for (std::size_t f = 0; f < n_faces(); ++f)
+        if (neighbour[f] < 0)
+          boundary(f, owner[f]);
+    }
 
     // boundary patches (gmsh physical curves)
     std::vector<std::string> patch_names;

@@ -1,65 +1,31 @@
 #pragma once
 // Steady incompressible Navier-Stokes on the finite-volume mesh of fv_mesh.h: cell-centred,
 // collocated velocity and pressure, Rhie-Chow face fluxes, SIMPLEC pressure-velocity coupling
-// (the paper's choice, [K22] section 7 of model.md), planar or axisymmetric (the hoop term
-// -mu u_r/r^2 in the radial momentum, the axis as a boundary).
+// (the paper's choice, [K22] section 7 of model.md) or coupled (u, v, p) iterations, planar or
+// axisymmetric; turbulence models and cavitation. doc/method.md, "Flow core", describes it.
 //
-// Per iteration (`solve'): momentum for u and v with under-relaxation (upwind implicitly, bounded
-// linear upwind as a deferred correction; central diffusion with an explicit non-orthogonal
-// correction; least-squares cell gradients); Rhie-Chow fluxes; the pressure-correction equation,
-// symmetric positive definite, by CHOLMOD with its symbolic analysis once per mesh; conservative
-// flux correction, velocity and pressure correction. Linear algebra on Eigen sparse matrices whose
-// pattern is built once; every assembly writes the values in place.
+// The outer iteration (SimplecSolver::solve_to) reads like OpenFOAM's simpleFoam:
+//   while the iteration control goes on (iteration_control.h: convergence, divergence, the cycle
+//   and stall tests, the switch to coupled iterations, Anderson acceleration):
+//     boundary values and the pressure gradient (boundary_conditions.h)
+//     the momentum equations (momentum_equation.h: UEqn)
+//     SIMPLEC: the predicted velocities, their Rhie-Chow fluxes (rhie_chow.h) and the pressure
+//              correction (pressure_equation.h: pEqn); or one coupled step (coupled_step.h)
+//     cavitation (cavitation_model.h), then the turbulence model (turbulence_model.h, k_epsilon.h)
+// What it reports of its fields: flow_postprocessing.h.
 #include "common/parameters/flow_solver.h"
-#include "flow/fv_mesh.h"
+#include "flow/boundary_conditions.h"
+#include "flow/flow_state.h"
 
 #include <functional>
 #include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace servodrift::flow
 {
-  struct FluidProperties
-  {
-    double density;   ///< rho [kg/m^3]
-    double viscosity; ///< dynamic viscosity mu [Pa*s]
-  };
-
-  struct BoundaryCondition
-  {
-    enum class Kind
-    {
-      wall,                 ///< no slip: the wall's velocity (default at rest)
-      velocity_inlet,       ///< a given velocity profile
-      total_pressure_inlet, ///< p_0 = p + rho u_n^2/2 given; the inflow normal to the face
-      pressure_outlet,      ///< static pressure given for outflow (velocity from the inside); an
-                            ///< inflow (backflow, entrainment) enters from rest at that pressure
-      axis,                 ///< r = 0 of an axisymmetric domain
-      symmetry,             ///< symmetry plane: no normal velocity, no shear
-    } kind = Kind::wall;
-    std::function<Vector2(const Vector2 &x)> velocity; ///< wall or inlet velocity at a boundary point [m/s]
-    double pressure = 0;                                 ///< total or static pressure [Pa]
-    /// k-epsilon: what an inflow brings, k = 3/2 (I u_n)^2 and epsilon = C_mu^(3/4) k^(3/2) / L
-    double turbulence_intensity = 0.05; ///< I [1]
-    double turbulence_length = 1e-4;    ///< L [m]
-
-    static BoundaryCondition wall(Vector2 moving = Vector2::Zero());
-    static BoundaryCondition velocity_inlet(std::function<Vector2(const Vector2 &)> profile);
-    static BoundaryCondition total_pressure_inlet(double total_pressure);
-    static BoundaryCondition pressure_outlet(double static_pressure);
-    static BoundaryCondition axis();
-    static BoundaryCondition symmetry();
-  };
-
-  struct Residuals
-  {
-    double u = 0, v = 0;      ///< scaled momentum residuals
-    double continuity = 0;    ///< sum of cell mass imbalances / throughput
-    double k = 0, epsilon = 0; ///< scaled residuals of the turbulence equations (0 if laminar)
-  };
-
   struct SolveReport
   {
     unsigned int iterations = 0;
@@ -75,18 +41,6 @@ namespace servodrift::flow
   {
   public:
     using std::runtime_error::runtime_error;
-  };
-
-  /// The solution fields, for continuation: what a solver can start from.
-  struct FlowFields
-  {
-    std::vector<double> u, v, p, flux, k, epsilon, turbulent_viscosity;
-    std::vector<double> face_area;                 ///< of the mesh they were computed on
-    double density = 0;                            ///< of the fluid they were computed with
-    std::vector<std::pair<std::string, double>> boundary_pressures; ///< pressure patches
-    bool turbulent = false;
-    std::vector<double> liquid_fraction; ///< with cavitation (empty otherwise)
-    std::vector<char> cavitating;
   };
 
   class SimplecSolver
@@ -120,7 +74,7 @@ namespace servodrift::flow
     /// `Vapour density ratio')); it is liquid again where its inflow fills it. Call before each solve
     /// whose reference pressure changes (the vapour pressure is absolute).
     void set_cavitation_pressure(double p_cav);
-    /// k-epsilon: the largest turbulent viscosity, as a multiple of the molecular one (1e5 unless
+    /// Turbulence models: the largest turbulent viscosity, as a multiple of the molecular one (1e5 unless
     /// set; applies to the current fields at once). The model's mu_t is held at this limit where it
     /// would exceed it; a converged state with cells at the limit
     /// (SolveReport::cells_at_viscosity_limit) is not the model's solution.
@@ -158,7 +112,8 @@ namespace servodrift::flow
     std::vector<double> wall_y_plus() const;
     /// Turbulent viscosity mu_t per cell [Pa*s] (zeros if laminar).
     const std::vector<double> &turbulent_viscosity() const;
-    /// Mass flux rho u.S through each face, out of the owner [kg/s, per radian if axisymmetric].
+    /// The mass that crosses each face per unit time, out of the owner [kg/s, per radian if
+    /// axisymmetric]: rho u.S, with cavitation the mixture's (the upwind cell's mixture density).
     const std::vector<double> &mass_flux() const;
     /// Face values at the boundary (index: face) of the last iteration.
     double boundary_pressure(std::size_t face) const;
@@ -169,7 +124,7 @@ namespace servodrift::flow
     double flow_rate(const std::string &patch) const;
     /// Area-weighted mean pressure on a patch [Pa].
     double mean_pressure(const std::string &patch) const;
-    /// Flux-weighted mean total pressure p + rho |u|^2/2 through a patch [Pa].
+    /// Mass-flux-weighted mean total pressure p + rho |u|^2/2 through a patch [Pa].
     double mean_total_pressure(const std::string &patch) const;
     /// The lowest cell or boundary-face pressure [Pa].
     double minimum_pressure() const;
@@ -177,14 +132,16 @@ namespace servodrift::flow
     /// of the fluid on the wall along e (a full revolution if axisymmetric).
     double pressure_force(const std::string &patch, const Vector2 &direction, double p_reference = 0) const;
 
-    /// Mass balance of the converged fields: the largest |sum of face fluxes| of a cell and the net
-    /// flux out of the domain, both relative to the throughput (inflow) [1].
+    /// Mass balance of the converged fields: the largest |sum of face mass fluxes| of a cell and the
+    /// net mass flux out of the domain, both relative to the throughput (inflow) [1]. With cavitation
+    /// the mixture's mass, which the liquid fraction of a cavitating cell balances.
     double max_cell_imbalance() const;
     double net_imbalance() const;
     double throughput() const; ///< inflow mass flux [kg/s per radian or per unit depth]
 
     /// Pressure, velocity, cell id, y+ and, on boundary line cells, the boundary id, as VTU (VTK
-    /// library); with k-epsilon also k, epsilon (epsilon~ for Launder-Sharma) and mu_t.
+    /// library); the turbulence model's fields (k-epsilon: k, epsilon (epsilon~ for Launder-Sharma)
+    /// and mu_t) and with cavitation the liquid fraction.
     void write_vtu(const std::string &filename) const;
 
   private:

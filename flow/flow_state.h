@@ -1,0 +1,62 @@
+#pragma once
+// The fields the units of the flow solver share (simplec.h): the cell velocities and pressure, the
+// face fluxes, the boundary face values and the pressure gradient. Each unit reads and writes them
+// by these names; the turbulence and cavitation models keep their own fields.
+#include "flow/fv_mesh.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace servodrift::flow
+{
+  struct FluidProperties
+  {
+    double density;   ///< rho [kg/m^3]
+    double viscosity; ///< dynamic viscosity mu [Pa*s]
+  };
+
+  /// The scaled residuals of one outer iteration.
+  struct Residuals
+  {
+    double u = 0, v = 0;       ///< scaled momentum residuals
+    double continuity = 0;     ///< sum of cell mass imbalances / throughput
+    double k = 0, epsilon = 0; ///< scaled residuals of the turbulence equations (0 if laminar)
+  };
+
+  /// The solution fields, for continuation: what a solver can start from.
+  struct FlowFields
+  {
+    std::vector<double> u, v, p, flux, k, epsilon, turbulent_viscosity;
+    std::vector<double> face_area;                 ///< of the mesh they were computed on
+    double density = 0;                            ///< of the fluid they were computed with
+    std::vector<std::pair<std::string, double>> boundary_pressures; ///< pressure patches
+    bool turbulent = false;
+    std::vector<double> liquid_fraction; ///< with cavitation (empty otherwise)
+    std::vector<char> cavitating;
+  };
+
+  /// The solver's own state at one iteration.
+  struct FlowState
+  {
+    explicit FlowState(const FvMesh &mesh)
+      : u(mesh.n_cells(), 0.0)
+      , v(mesh.n_cells(), 0.0)
+      , p(mesh.n_cells(), 0.0)
+      , flux(mesh.n_faces(), 0.0)
+      , u_b(mesh.n_faces(), 0.0)
+      , v_b(mesh.n_faces(), 0.0)
+      , p_b(mesh.n_faces(), 0.0)
+      , grad_p(mesh.n_cells(), Vector2::Zero())
+    {}
+
+    std::vector<double> u, v; ///< cell velocity (x axial, y radial) [m/s]
+    std::vector<double> p;    ///< cell pressure [Pa]
+    /// F = rho u.S through each face, out of its owner, at the liquid's density rho [kg/s, per radian
+    /// if axisymmetric]: the face flux of the discrete continuity and momentum equations. Where cells
+    /// cavitate, the mass that crosses a face is the mixture's (CavitationModel::mixture_flux).
+    std::vector<double> flux;
+    std::vector<double> u_b, v_b, p_b; ///< values at the boundary faces (indexed by face; interior entries unused)
+    std::vector<Vector2> grad_p;       ///< least-squares pressure gradient per cell [Pa/m]
+  };
+} // namespace servodrift::flow

@@ -1,0 +1,55 @@
+#pragma once
+// The momentum equations (OpenFOAM's UEqn.H; doc/method.md, "Flow core"): for each component of u,
+//   div(F u) - div(mu_eff grad u) = -grad p [+ div(mu_t (grad u)^T)] [- (mu + 2 mu_t) v/r^2 (radial)]
+// assembled on the convecting fluxes F and the face viscosities of the turbulence model, the
+// pressure gradient explicit, relaxed by alpha_u. From the x equation the coefficients of the
+// pressure-velocity coupling: D = V/a_P (Rhie-Chow) and SIMPLEC's D~ = V/(a_P - sum a_nb).
+#include "flow/fv_matrix.h"
+#include "flow/turbulence_model.h"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace servodrift::flow
+{
+  class MomentumEquation
+  {
+  public:
+    MomentumEquation(const FvMesh &mesh, const MatrixPattern &pattern, const FluidProperties &fluid,
+                     const FlowSolverParameters &settings);
+    ~MomentumEquation();
+
+    /// sum |b - A u| and sum |b - A v| of the unrelaxed equations at the state's velocities, and
+    /// sum a_P |u| of the x equation, what both are relative to.
+    struct Residuals
+    {
+      double u, v, scale;
+    };
+    /// Assembles both components (then relaxed) and D, D~.
+    Residuals assemble(const FlowState &state, const BoundaryConditions &boundaries, const TurbulenceModel &turbulence,
+                       const std::vector<double> &convecting_flux);
+    /// The predicted velocities: u and v of `state' from the relaxed equations. With the direct
+    /// solver, `first_iteration' of a solve renews UMFPACK's symbolic analysis (its strategy reads the
+    /// values as well as the pattern).
+    void solve(FlowState &state, bool first_iteration);
+
+    /// The relaxed equation of component 0 (x) or 1 (y, radial).
+    const FvMatrix &component(int i) const { return equation[i]; }
+    const std::vector<double> &D() const { return D_rhie_chow; }
+    const std::vector<double> &D_simplec() const { return D_tilde; }
+
+  private:
+    double assemble_component(int i, const FlowState &state, const BoundaryConditions &boundaries,
+                              const TurbulenceModel &turbulence, const std::vector<double> &convecting_flux,
+                              const std::vector<Vector2> &grad_u, const std::vector<Vector2> &grad_v, double &scale);
+
+    const FvMesh &mesh;
+    FluidProperties fluid;
+    FlowSolverParameters settings;
+    std::array<FvMatrix, 2> equation;
+    std::vector<double> D_rhie_chow, D_tilde;
+    struct DirectSolvers;
+    std::unique_ptr<DirectSolvers> direct;
+  };
+} // namespace servodrift::flow

@@ -1,0 +1,56 @@
+#include "flow/turbulence_model.h"
+
+#include "flow/k_epsilon.h"
+
+#include <algorithm>
+
+namespace servodrift::flow
+{
+  std::unique_ptr<TurbulenceModel> TurbulenceModel::create(const FvMesh &mesh, const FluidProperties &fluid,
+                                                           const BoundaryConditions &boundaries,
+                                                           const FlowSolverParameters &settings,
+                                                           const MatrixPattern &pattern)
+  {
+    switch (settings.turbulence)
+      {
+        case FlowSolverParameters::Turbulence::k_epsilon:
+          return std::make_unique<KEpsilonTwoLayer>(mesh, fluid, boundaries, settings, pattern);
+        case FlowSolverParameters::Turbulence::k_epsilon_launder_sharma:
+          return std::make_unique<KEpsilonLaunderSharma>(mesh, fluid, boundaries, settings, pattern);
+        default: return std::make_unique<LaminarFlow>(mesh, fluid, boundaries);
+      }
+  }
+
+  TurbulenceModel::TurbulenceModel(const FvMesh &mesh_, const FluidProperties &fluid_,
+                                   const BoundaryConditions &boundaries_)
+    : mesh(mesh_)
+    , fluid(fluid_)
+    , boundaries(boundaries_)
+    , mu_t(mesh_.n_cells(), 0.0)
+    , mu_face(mesh_.n_faces(), fluid_.viscosity)
+  {}
+
+  void TurbulenceModel::set_viscosity_limit(double ratio)
+  {
+    viscosity_ratio_limit = ratio;
+    const double limit = ratio * fluid.viscosity;
+    for (double &value : mu_t)
+      value = std::min(value, limit);
+    update_face_viscosity();
+  }
+
+  void TurbulenceModel::update_face_viscosity()
+  {
+    mesh.for_each_face([&](std::size_t f, unsigned int, unsigned int) { mu_face[f] = fluid.viscosity + mesh.interpolate(f, mu_t); },
+                       [&](std::size_t f, unsigned int P) {
+                         const double mut = boundaries.kind(f) != BoundaryCondition::Kind::wall ? mu_t[P] : 0.0;
+                         mu_face[f] = fluid.viscosity + mut;
+                       });
+  }
+
+  LaminarFlow::LaminarFlow(const FvMesh &mesh, const FluidProperties &fluid, const BoundaryConditions &boundaries)
+    : TurbulenceModel(mesh, fluid, boundaries)
+  {
+    update_face_viscosity();
+  }
+} // namespace servodrift::flow
