@@ -89,7 +89,7 @@ namespace servodrift::flow
         const double ax = rho * area * nrm.x(), ay = rho * area * nrm.y();
         const double w = mesh.face_weight(f);
         const Vector2 d = mesh.cell_center[N] - mesh.cell_center[P];
-        const double c_f = pressure_face_coefficient(mesh, f, rho, D);
+        const double c_f = face_coefficient(mesh, f, D, rho);
         const double explicit_part = c_f * mesh.interpolate(f, s.grad_p).dot(d);
         for (const auto &[row, sign] : {std::pair<unsigned int, double>{P, m}, {N, -m}})
           {
@@ -106,7 +106,7 @@ namespace servodrift::flow
         if (boundaries.is_pressure_boundary(f))
           {
             const Vector2 d = mesh.face_center[f] - mesh.cell_center[P];
-            const double c_b = pressure_face_coefficient(mesh, f, rho, D);
+            const double c_b = face_coefficient(mesh, f, D, rho);
             continuity(P, P, m * ax), continuity(P, n + P, m * ay), continuity(P, pressure + P, m * c_b);
             rhs[pressure + P] -= m * (-c_b * s.p_b[f] + c_b * s.grad_p[P].dot(d));
           }

@@ -326,9 +326,7 @@ namespace servodrift::flow
     const auto &F = d.solver.mass_flux();
     for (unsigned int f : d.exit_faces)
       {
-        const double w = d.mesh.face_weight(f);
-        const unsigned int P = d.mesh.owner[f], N = d.mesh.neighbour[f];
-        const double p_f = w * p[P] + (1 - w) * p[N], u_f = w * u[P] + (1 - w) * u[N];
+        const double p_f = d.mesh.interpolate(f, p), u_f = d.mesh.interpolate(f, u);
         sum += p_f * d.mesh.face_area[f];
         area += d.mesh.face_area[f];
         // F n_x = rho u_x A: the +x momentum flux rho u_x^2 A

@@ -89,7 +89,7 @@ namespace servodrift::flow
     mesh.for_each_face(
       [&](std::size_t f, unsigned int P, unsigned int N) {
         const double m = cavitation.face_mixture_ratio(f, F[f]);
-        coefficient[f] = pressure_face_coefficient(mesh, f, rho, D_simplec);
+        coefficient[f] = face_coefficient(mesh, f, D_simplec, rho);
         value[pattern.owner_row[f]] = value[pattern.neighbour_row[f]] = -m * coefficient[f];
         diag[P] += m * coefficient[f], diag[N] += m * coefficient[f];
       },
@@ -97,7 +97,7 @@ namespace servodrift::flow
         if (!boundaries.is_pressure_boundary(f))
           return;
         const double m = cavitation.face_mixture_ratio(f, F[f]);
-        coefficient[f] = pressure_face_coefficient(mesh, f, rho, D_simplec); // p' = 0 there
+        coefficient[f] = face_coefficient(mesh, f, D_simplec, rho); // p' = 0 there
         if (F[f] < 0)
           {
             // p_b = p_0 - F^2/(2 rho A^2) moves with the inflow: p_b' = -|F| F'/(rho A^2), so

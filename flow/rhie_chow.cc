@@ -9,14 +9,11 @@ namespace servodrift::flow
     std::vector<double> F(mesh.n_faces(), 0.0);
     mesh.for_each_face(
       [&](std::size_t f, unsigned int P, unsigned int N) {
-        const Vector2 &nrm = mesh.face_normal[f];
-        const double area = mesh.face_area[f];
         const Vector2 d = mesh.cell_center[N] - mesh.cell_center[P];
         const Vector2 u_f(mesh.interpolate(f, s.u), mesh.interpolate(f, s.v));
-        const Vector2 grad_f = mesh.interpolate(f, s.grad_p);
-        const double D_f = mesh.interpolate(f, D);
-        // u_f = mean(u) - D_f (grad p compact - mean(grad p)) along the face normal
-        F[f] = rho * (u_f.dot(nrm) * area - D_f * ((s.p[N] - s.p[P]) - grad_f.dot(d)) * area / nrm.dot(d));
+        // the mean velocity's flux less D_f times the compact pressure difference minus the mean gradient's
+        const double pressure_difference = (s.p[N] - s.p[P]) - mesh.interpolate(f, s.grad_p).dot(d);
+        F[f] = rho * (u_f.dot(mesh.face_normal[f]) * mesh.face_area[f] - face_coefficient(mesh, f, D, pressure_difference));
       },
       [&](std::size_t f, unsigned int P) {
         const Vector2 &nrm = mesh.face_normal[f];
@@ -29,7 +26,8 @@ namespace servodrift::flow
               {
                 const Vector2 d = mesh.face_center[f] - mesh.cell_center[P];
                 const Vector2 uP(s.u[P], s.v[P]);
-                F[f] = rho * (uP.dot(nrm) * area - D[P] * ((s.p_b[f] - s.p[P]) - s.grad_p[P].dot(d)) * area / nrm.dot(d));
+                const double pressure_difference = (s.p_b[f] - s.p[P]) - s.grad_p[P].dot(d);
+                F[f] = rho * (uP.dot(nrm) * area - face_coefficient(mesh, f, D, pressure_difference));
                 break;
               }
             default: F[f] = 0; // walls, axis, symmetry

@@ -3,23 +3,23 @@
 //   F_f = rho [u_f . S - D_f ((p_N - p_P) - mean(grad p)_f . d) |S|/(n . d)],
 // u_f and D_f linearly interpolated, D = V/a_P of the momentum equations: the compact pressure
 // difference minus the interpolated gradient along d removes the checkerboard of collocated grids
-// and vanishes for a linear pressure. c_f = rho D_f |S|/(n . d) is the face's pressure coefficient:
-// the flux's change per unit change of p_N - p_P, which the SIMPLEC correction and the coupled step
-// share.
+// and vanishes for a linear pressure. Its pressure term, a D_f |S|/(n . d), is the one face
+// coefficient of the pressure-velocity coupling: with a = rho it is c_f, the change of F per unit
+// change of p_N - p_P, which the SIMPLEC correction (with D~) and the coupled step share.
 #include "flow/boundary_conditions.h"
 
 #include <vector>
 
 namespace servodrift::flow
 {
-  /// c_f = rho D_f |S|/(n . d) of face f: interior faces with the interpolated D, boundary faces with
-  /// the owner's D and its normal distance to the face [kg/(s Pa) per radian].
-  inline double pressure_face_coefficient(const FvMesh &mesh, std::size_t f, double density,
-                                          const std::vector<double> &D)
+  /// a D_f |S|/(n . d) of face f: interior faces with the interpolated D, boundary faces with the
+  /// owner's D and its normal distance to the face. a = rho: the face's pressure coefficient c_f
+  /// [kg/(s Pa) per radian]; a = a pressure difference: the pressure part of rho^-1 F_f.
+  inline double face_coefficient(const FvMesh &mesh, std::size_t f, const std::vector<double> &D, double a)
   {
     if (mesh.neighbour[f] >= 0)
-      return density * mesh.interpolate(f, D) * mesh.face_area[f] / mesh.normal_distance(f);
-    return density * D[mesh.owner[f]] * mesh.face_area[f] / mesh.distance_to_face(f);
+      return a * mesh.interpolate(f, D) * mesh.face_area[f] / mesh.normal_distance(f);
+    return a * D[mesh.owner[f]] * mesh.face_area[f] / mesh.distance_to_face(f);
   }
 
   /// The Rhie-Chow fluxes of the state's velocities and pressures with the momentum coefficients D:
