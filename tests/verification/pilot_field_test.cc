@@ -20,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -350,6 +351,53 @@ namespace servodrift::flow
     std::printf("bridge force change: odd part %.4f N (K_f %.0f N/m), even part %.4f N (ratio %.3f)\n", odd,
                 odd / 20e-6, even, even / odd);
     EXPECT_LT(std::abs(even / odd), 0.25);
+  }
+
+  // The mass balance with cavitation (issue 27): the pressure correction balances the mixture's mass
+  // (each face's flux times its upwind mixture density ratio) of every liquid cell to round-off, and
+  // SimplecSolver::max_cell_imbalance reports that mixture balance; the flux at the liquid's density
+  // does not balance where the vapour expands, so it is not the mass balance. In the cavitating
+  // cells the liquid fraction carries the balance, and the convergence test does not see it: at this
+  // case (RV-1's null gap, full pressure, resolution 0.5) they hold 2.6e-3 of the throughput and the
+  // outflow is 0.25 % below the inflow (doc/validation.md, known limits).
+  TEST(PilotField, CavitatingCaseBalancesTheMixturesMassInItsLiquidCells)
+  {
+    const ValveDescription v = laminar_valve();
+    PilotFieldCase c = pilot_field_case(v, 40);
+    c.resolution = 0.5;
+    PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, 40e-6);
+    const PilotFieldResult r = nozzle.solve(20.6e6);
+    ASSERT_TRUE(r.cavitating);
+    const SimplecSolver &solver = nozzle.solver();
+    const FvMesh &mesh = nozzle.mesh();
+    const FlowFields fields = solver.fields(); // fluxes F at the liquid's density, the cavitating cells
+    auto net = [&](const std::vector<double> &flux) {
+      std::vector<double> sum(mesh.n_cells(), 0.0);
+      for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+        {
+          sum[mesh.owner[f]] += flux[f];
+          if (mesh.neighbour[f] >= 0)
+            sum[mesh.neighbour[f]] -= flux[f];
+        }
+      for (double &x : sum)
+        x = std::abs(x) / solver.throughput();
+      return sum;
+    };
+    const std::vector<double> mixture = net(solver.mass_flux()), liquid_density = net(fields.flux);
+    double liquid_cells = 0, cavitating_cells = 0, cavitating_liquid_density = 0;
+    for (std::size_t cell = 0; cell < mesh.n_cells(); ++cell)
+      if (fields.cavitating[cell])
+        cavitating_cells = std::max(cavitating_cells, mixture[cell]),
+        cavitating_liquid_density = std::max(cavitating_liquid_density, liquid_density[cell]);
+      else
+        liquid_cells = std::max(liquid_cells, mixture[cell]);
+    std::printf("%td cavitating cells; largest mixture imbalance: liquid cells %.2e, cavitating cells %.2e "
+                "(at the liquid's density %.2e); net %.2e (of the throughput)\n",
+                std::count(fields.cavitating.begin(), fields.cavitating.end(), 1), liquid_cells, cavitating_cells,
+                cavitating_liquid_density, solver.net_imbalance());
+    EXPECT_LT(liquid_cells, 1e-9);
+    EXPECT_DOUBLE_EQ(solver.max_cell_imbalance(), std::max(liquid_cells, cavitating_cells));
+    EXPECT_GT(cavitating_liquid_density, 5 * cavitating_cells);
   }
 
   // Mesh convergence at the cases' conditions: resolution 0.7, 1 and 1.4 (cell counts 1 : 2 : 4);
