@@ -1,0 +1,152 @@
+// The outputs of the field-level pilot stage's cases: flow/<geometry>_cases.csv with its .pvd
+// collection, the counts on stderr, and the fixed_orifice and nozzle_flapper tables.
+#include "flow/pilot_field_cases.h"
+
+#include "common/csv.h"
+#include "common/error.h"
+#include "common/output_files.h"
+#include "common/stage_output.h"
+#include "common/version.h"
+#include "common/vtu_output.h"
+
+#include <iostream>
+#include <string>
+#include <utility>
+
+namespace servodrift::flow
+{
+  using namespace case_record;
+
+  namespace
+  {
+    std::size_t count_flagged(const CaseRows &records, std::size_t column, double value)
+    {
+      std::size_t n = 0;
+      for (const auto &r : records)
+        n += r[column] == value;
+      return n;
+    }
+  } // namespace
+
+  void write_case_summary(const ValveDescription &valve, PilotGeometry g, const CaseRows &records)
+  {
+    const bool orifice = g == PilotGeometry::fixed_orifice;
+    const std::string name = orifice ? "fixed_orifice" : "nozzle_flapper";
+    on_rank_zero([&] {
+      CsvDocument doc;
+      doc.comments = {"servodrift-output " + name + "_cases",
+                      "field-level " + std::string(orifice ? "fixed-orifice" : "nozzle-flapper") +
+                        " cases: results, diagnostics (model.md 4.2, C12) and the reduced-order values (E21-E23) "
+                        "beside them; flag 2 = not converged (the table carries the reduced-order value), 4 = "
+                        "beyond the verified range (C_d and the reduced-order C_d differ by more than a factor " +
+                        format_number(verified_discharge_factor) + ")",
+                      "producer " + producer_string("flow/field"), "parameters-sha256 " + valve.parameters_sha256};
+      doc.columns = {"temperature[degC]",
+                     "gap[m]",
+                     "pressure_difference[Pa]",
+                     "flow_model[-]",
+                     "flow_rate[m^3/s]",
+                     "discharge_coefficient[1]",
+                     "reduced_order_discharge_coefficient[1]",
+                     "reynolds_number[1]",
+                     "flapper_force[N]",
+                     "reduced_order_flapper_force[N]",
+                     "land_force[N]",
+                     "jet_force[N]",
+                     "bore_pressure[Pa]",
+                     "minimum_absolute_pressure[Pa]",
+                     "below_vapour_pressure[1]",
+                     "max_wall_y_plus[1]",
+                     "max_turbulent_viscosity_ratio[1]",
+                     "iterations[1]",
+                     "wall_time[s]",
+                     "flag[1]"};
+      std::vector<std::pair<double, std::string>> datasets;
+      for (const auto &r : records)
+        {
+          const bool converged = r[flag] == flags::computed || r[flag] == flags::beyond_verified;
+          auto cell = [&](double v, bool defined = true) { return defined ? format_cell(v) : std::string(); };
+          doc.rows.push_back({cell(r[temperature]), cell(r[gap], !orifice), cell(r[pressure_difference]),
+                              model_name(Turbulence(int(r[model]))), cell(r[flow_rate]), cell(r[discharge_coefficient]),
+                              cell(r[reduced_discharge_coefficient]), cell(r[reynolds_number]),
+                              cell(r[flapper_force], !orifice), cell(r[reduced_flapper_force], !orifice),
+                              cell(r[land_force], !orifice && converged), cell(r[jet_force], !orifice && converged),
+                              cell(r[bore_pressure], !orifice && converged), cell(r[minimum_absolute_pressure], converged),
+                              cell(r[cavitating], converged), cell(r[max_wall_y_plus], converged),
+                              cell(r[max_turbulent_viscosity_ratio], converged),
+                              cell(r[iterations], converged), cell(r[wall_time]), cell(r[flag])});
+          if (converged && writes_fields(valve, r[temperature]))
+            datasets.emplace_back(datasets.size(), vtu_name(g, r[temperature], r[gap], r[pressure_difference]));
+        }
+      write_file_atomically(flow_directory(valve) + "/" + name + "_cases.csv", doc.text());
+      if (!datasets.empty())
+        write_pvd_atomically(flow_directory(valve) + "/" + name + ".pvd", datasets);
+    });
+  }
+
+  void report_counts(const char *what, const CaseRows &records, bool valve_cavitation)
+  {
+    if (mpi_rank() != 0)
+      return;
+    const std::size_t failed = count_flagged(records, flag, flags::not_converged);
+    const std::size_t cavitating_cases = count_flagged(records, cavitating, 1);
+    if (failed > 0)
+      std::cerr << "servodrift: warning: " << failed << " of " << records.size() << " " << what
+                << " cases did not converge (flag 2; see flow/*_cases.csv)\n";
+    if (const std::size_t beyond = count_flagged(records, flag, flags::beyond_verified); beyond > 0)
+      std::cerr << "servodrift: warning: " << beyond << " of " << records.size() << " " << what
+                << " cases lie beyond the range where the field level was verified: their C_d differs from the "
+                   "reduced-order value by more than a factor "
+                << verified_discharge_factor << " (flag 4; see flow/*_cases.csv)\n";
+    if (cavitating_cases > 0)
+      std::cerr << "servodrift: note: " << cavitating_cases << " of " << records.size() << " " << what
+                << " cases cavitate ("
+                << (valve_cavitation ? "the equilibrium cavitation model holds those cells at the vapour pressure"
+                                     : "Pilot stage/Field cavitation is off: the single-phase result stretches the "
+                                       "liquid below its vapour pressure and is not physical there")
+                << "; model.md C12; flow/*_cases.csv)\n";
+  }
+
+  Table fixed_orifice_table(const ValveDescription &valve, const CaseRows &records)
+  {
+    Table table(schemas::fixed_orifice);
+    std::size_t next = 0;
+    for (double T : valve.sweeps.table_temperatures)
+      {
+        table.rows.push_back({T, 0.0, 0.0, 0.0, 0.0, flags::limit}); // no pressure difference, no flow
+        for (std::size_t j = 0; j < valve.sweeps.field_orifice_pressure_fractions.size(); ++j, ++next)
+          {
+            const auto &r = records[next];
+            table.rows.push_back({T, r[pressure_difference], r[flow_rate], r[discharge_coefficient], r[reynolds_number], r[flag]});
+          }
+      }
+    return table;
+  }
+
+  Table nozzle_flapper_table(const ValveDescription &valve, const CaseRows &records)
+  {
+    Table table(schemas::nozzle_flapper);
+    const auto gaps = scaled(valve.sweeps.field_gap_fractions, valve.pilot.null_gap);
+    const auto dps = scaled(valve.sweeps.field_nozzle_pressure_fractions, span(valve));
+    std::size_t next = 0;
+    for (double T : valve.sweeps.table_temperatures)
+      {
+        const PilotClosedForms closed_forms(valve, T);
+        // the closed gap: no flow, the control pressure on the bore's area (E23 at h = 0)
+        table.rows.push_back({T, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, flags::limit});
+        for (double dp : dps)
+          table.rows.push_back({T, 0.0, dp, 0.0, 0.0, 0.0, closed_forms.nozzle(0.0, dp).flapper_force, flags::limit});
+        for (double h : gaps)
+          {
+            table.rows.push_back({T, h, 0.0, 0.0, 0.0, 0.0, 0.0, flags::limit}); // no pressure difference
+            for (std::size_t j = 0; j < dps.size(); ++j, ++next)
+              {
+                const auto &r = records[next];
+                table.rows.push_back({T, h, r[pressure_difference], r[flow_rate], r[discharge_coefficient],
+                                      r[reynolds_number], r[flapper_force], r[flag]});
+              }
+          }
+      }
+    return table;
+  }
+} // namespace servodrift::flow

@@ -1,0 +1,228 @@
+// The continuation chain of the field-level pilot stage and the helpers of its cases.
+#include "flow/pilot_field_cases.h"
+
+#include "common/error.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+
+namespace servodrift::flow
+{
+  using namespace case_record;
+  using FlowModel = PilotStageParameters::FlowModel;
+
+  namespace
+  {
+    /// The flow model of a case (D11): fixed, or laminar below the transition Reynolds number.
+    Turbulence model_of_case(FlowModel m, double ideal_reynolds, double transition)
+    {
+      switch (m)
+        {
+          case FlowModel::laminar: return Turbulence::laminar;
+          case FlowModel::k_epsilon: return Turbulence::k_epsilon;
+          case FlowModel::k_epsilon_launder_sharma: return Turbulence::k_epsilon_launder_sharma;
+          case FlowModel::automatic: break;
+        }
+      return ideal_reynolds < transition ? Turbulence::laminar : Turbulence::k_epsilon;
+    }
+
+    /// The table temperature whose cases go to VTU with `Output/Flow fields = reference'.
+    double reference_table_temperature(const ValveDescription &valve)
+    {
+      double best = valve.sweeps.table_temperatures.front();
+      for (double T : valve.sweeps.table_temperatures)
+        if (std::abs(T - valve.operating.reference_temperature) < std::abs(best - valve.operating.reference_temperature))
+          best = T;
+      return best;
+    }
+  } // namespace
+
+  bool beyond_verified(double field_discharge, double reduced_discharge)
+  {
+    return field_discharge > 0 && reduced_discharge > 0 &&
+           std::abs(std::log(field_discharge / reduced_discharge)) > std::log(verified_discharge_factor);
+  }
+
+  double span(const ValveDescription &valve)
+  {
+    return valve.operating.supply_pressure - valve.operating.return_pressure;
+  }
+
+  std::vector<double> scaled(const std::vector<double> &fractions, double scale)
+  {
+    std::vector<double> v;
+    for (double f : fractions)
+      v.push_back(f * scale);
+    return v;
+  }
+
+  const char *model_name(Turbulence t)
+  {
+    switch (t)
+      {
+        case Turbulence::laminar: return "laminar";
+        case Turbulence::k_epsilon: return "k-epsilon";
+        case Turbulence::k_epsilon_launder_sharma: return "k-epsilon-launder-sharma";
+      }
+    return "?";
+  }
+
+  std::string flow_directory(const ValveDescription &valve) { return valve.output.directory + "/flow"; }
+
+  std::string vtu_name(PilotGeometry g, double T, double h, double dp)
+  {
+    char name[96];
+    if (g == PilotGeometry::fixed_orifice)
+      std::snprintf(name, sizeof name, "fixed_orifice_T%.1f_dp%.3fMPa.vtu", T, dp * 1e-6);
+    else
+      std::snprintf(name, sizeof name, "nozzle_flapper_T%.1f_h%.2fum_dp%.3fMPa.vtu", T, h * 1e6, dp * 1e-6);
+    return name;
+  }
+
+  bool writes_fields(const ValveDescription &valve, double T)
+  {
+    switch (valve.output.flow_fields)
+      {
+        case OutputParameters::FlowFields::all: return true;
+        case OutputParameters::FlowFields::none: return false;
+        case OutputParameters::FlowFields::reference: return T == reference_table_temperature(valve);
+      }
+    return false;
+  }
+
+  std::vector<double> Chain::solve(double h, double dp, const std::optional<FlowFields> &start)
+  {
+    const auto begin = std::chrono::steady_clock::now();
+    const auto &pilot = valve.pilot;
+    const bool orifice = kind == PilotGeometry::fixed_orifice;
+    if (!orifice && h != current_gap)
+      cases.clear(), current_gap = h; // another mesh
+    // the model: by the ideal-velocity Reynolds number of this case
+    const double nu = conditions.fluid.viscosity / conditions.fluid.density;
+    const auto g = closed_forms.geometry();
+    const double length = orifice ? g.fixed_orifice_diameter : 2 * h;
+    const double ideal_Re = length * std::sqrt(2 * dp / conditions.fluid.density) / nu;
+    const Turbulence t = orifice ? model_of_case(pilot.fixed_orifice_flow_model, ideal_Re, pilot.fixed_orifice_transition_reynolds) :
+                                   model_of_case(pilot.nozzle_flow_model, ideal_Re, pilot.nozzle_transition_reynolds);
+    auto &slot = cases[t];
+    if (!slot)
+      {
+        PilotFieldCase c = conditions;
+        c.turbulence = t;
+        slot = std::make_unique<PilotField>(valve, kind, c, h);
+      }
+    if (start)
+      slot->set_fields(*start);
+    else if (last && last_model != t)
+      slot->set_fields(*last); // the chain switched model: continue from the other model's fields
+    const std::string vtu = flow_directory(valve) + "/" + vtu_name(kind, conditions.temperature, h, dp);
+    failure_output = writes_fields(valve, conditions.temperature) ? vtu : "";
+    slot->set_failure_output(failure_output);
+
+    std::vector<double> record(record_length, 0.0);
+    record[temperature] = conditions.temperature;
+    record[gap] = h;
+    record[pressure_difference] = dp;
+    record[model] = double(t);
+    const OrificeState reduced = orifice ? closed_forms.fixed_orifice(dp) : closed_forms.nozzle(h, dp);
+    record[reduced_discharge_coefficient] = reduced.discharge_coefficient;
+    record[reduced_flapper_force] = reduced.flapper_force;
+    try
+      {
+        const PilotFieldResult r = solve_with_retry(slot, t, h, dp, start.has_value());
+        record[flow_rate] = r.flow_rate;
+        record[discharge_coefficient] = r.discharge_coefficient;
+        record[reynolds_number] = r.reynolds_number;
+        record[flapper_force] = r.flapper_force;
+        record[land_force] = r.land_force;
+        record[jet_force] = r.jet_force;
+        record[bore_pressure] = r.bore_pressure;
+        record[minimum_absolute_pressure] = r.minimum_absolute_pressure;
+        record[cavitating] = r.cavitating ? 1 : 0;
+        record[max_wall_y_plus] = r.max_wall_y_plus;
+        record[max_turbulent_viscosity_ratio] = r.max_turbulent_viscosity_ratio;
+        record[iterations] = r.iterations;
+        record[flag] = beyond_verified(record[discharge_coefficient], reduced.discharge_coefficient) ?
+                         flags::beyond_verified :
+                         flags::computed;
+        last = slot->fields();
+        last_model = t;
+        last_dp = dp;
+        if (writes_fields(valve, conditions.temperature))
+          slot->write_vtu(vtu);
+      }
+    catch (const std::runtime_error &e) // NotConverged or diverged: flagged, the reduced order stands in
+      {
+        std::cerr << "servodrift: warning: " << (orifice ? "fixed orifice" : "nozzle-flapper") << " at "
+                  << format_number(conditions.temperature) << " degC"
+                  << (orifice ? "" : ", gap " + format_number(h * 1e6) + " um") << ", dp "
+                  << format_number(dp * 1e-6) << " MPa (" << model_name(t) << "): " << e.what()
+                  << "; its table row is flagged 2 and carries the reduced-order value\n";
+        record[flow_rate] = reduced.flow_rate;
+        record[discharge_coefficient] = reduced.discharge_coefficient;
+        record[reynolds_number] = reduced.reynolds_number;
+        record[flapper_force] = reduced.flapper_force;
+        record[flag] = flags::not_converged;
+        // the next case continues from the last converged fields, or starts up again
+        if (last)
+          slot->set_fields(*last);
+        else
+          slot.reset();
+      }
+    record[wall_time] = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    return record;
+  }
+
+  void Chain::resume(const State &s)
+  {
+    last = s.fields, last_model = s.model, last_dp = s.pressure_difference;
+    PilotFieldCase c = conditions;
+    c.turbulence = s.model;
+    auto &slot = cases[s.model];
+    slot = std::make_unique<PilotField>(valve, kind, c, current_gap > 0 ? current_gap : 0);
+    slot->set_fields(s.fields);
+  }
+
+  PilotFieldResult Chain::solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
+                                           bool started_elsewhere)
+  {
+    try
+      {
+        return slot->solve(dp);
+      }
+    catch (const std::runtime_error &)
+      {
+        const bool own_state = last && last_model == t && !started_elsewhere && last_dp != dp;
+        PilotFieldCase c = conditions;
+        c.turbulence = t;
+        if (own_state)
+          {
+            slot->set_fields(*last);
+            const double between = std::sqrt(last_dp * dp);
+            PilotFieldResult r = slot->solve(between);
+            const unsigned int iterations = r.iterations;
+            r = slot->solve(dp);
+            r.iterations += iterations;
+            return r;
+          }
+        slot = std::make_unique<PilotField>(valve, kind, c, h);
+        slot->set_failure_output(failure_output);
+        // the smaller steps for this solve only: the chain's next cases take the valve's
+        slot->set_continuation_ratio(std::sqrt(valve.pilot.field_continuation_ratio));
+        try
+          {
+            PilotFieldResult r = slot->solve(dp);
+            slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
+            return r;
+          }
+        catch (const std::runtime_error &)
+          {
+            slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
+            throw;
+          }
+      }
+  }
+} // namespace servodrift::flow
