@@ -24,6 +24,7 @@ namespace servodrift::flow
           case FlowModel::laminar: return Turbulence::laminar;
           case FlowModel::k_epsilon: return Turbulence::k_epsilon;
           case FlowModel::k_epsilon_launder_sharma: return Turbulence::k_epsilon_launder_sharma;
+          case FlowModel::k_omega_sst: return Turbulence::k_omega_sst;
           case FlowModel::automatic: break;
         }
       return ideal_reynolds < transition ? Turbulence::laminar : Turbulence::k_epsilon;
@@ -66,6 +67,7 @@ namespace servodrift::flow
         case Turbulence::laminar: return "laminar";
         case Turbulence::k_epsilon: return "k-epsilon";
         case Turbulence::k_epsilon_launder_sharma: return "k-epsilon-launder-sharma";
+        case Turbulence::k_omega_sst: return "k-omega-sst";
       }
     return "?";
   }

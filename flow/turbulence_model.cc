@@ -1,6 +1,7 @@
 #include "flow/turbulence_model.h"
 
 #include "flow/k_epsilon.h"
+#include "flow/k_omega_sst.h"
 
 #include <algorithm>
 
@@ -17,6 +18,8 @@ namespace servodrift::flow
           return std::make_unique<KEpsilonTwoLayer>(mesh, fluid, boundaries, settings, pattern);
         case FlowSolverParameters::Turbulence::k_epsilon_launder_sharma:
           return std::make_unique<KEpsilonLaunderSharma>(mesh, fluid, boundaries, settings, pattern);
+        case FlowSolverParameters::Turbulence::k_omega_sst:
+          return std::make_unique<KOmegaSST>(mesh, fluid, boundaries, settings, pattern);
         default: return std::make_unique<LaminarFlow>(mesh, fluid, boundaries);
       }
   }

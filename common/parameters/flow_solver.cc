@@ -69,14 +69,15 @@ namespace servodrift
     prm.declare_entry("Monitor tolerance", "1e-4", Patterns::Double(1e-14, 1),
                       "Largest relative change of a monitored result over the monitor iterations. [1]");
     prm.declare_entry("Turbulence model", "laminar",
-                      Patterns::Selection("laminar|k-epsilon|k-epsilon-launder-sharma"),
+                      Patterns::Selection("laminar|k-epsilon|k-epsilon-launder-sharma|k-omega-sst"),
                       "laminar; k-epsilon: the standard model (C_mu 0.09, C1 1.44, C2 1.92, sigma_k 1.0, "
                       "sigma_eps 1.3) with a two-layer wall treatment (Wolfshtein's one-equation model where "
                       "the wall-distance Reynolds number sqrt(k) y/nu is below 60, blended as Jongen and Marx), "
                       "integrated to the wall; k-epsilon-launder-sharma: the same constants with the "
-                      "Launder-Sharma damping functions everywhere (it relaminarises free shear layers). Both "
-                      "need a first cell at y+ of order 1. Where a stage chooses per case, its own entry "
-                      "overrides this. [-]");
+                      "Launder-Sharma damping functions everywhere (it relaminarises free shear layers); "
+                      "k-omega-sst: Menter's shear-stress transport model in its 2003 form (production "
+                      "limiter, omega resolved to the wall; doc/method.md). All need a first cell at y+ of "
+                      "order 1. Where a stage chooses per case, its own entry overrides this. [-]");
     prm.declare_entry("Turbulence relaxation", "0.9", Patterns::Double(0.01, 1),
                       "Under-relaxation of the k and epsilon equations. [1]");
     prm.declare_entry("Turbulent viscosity relaxation", "0.5", Patterns::Double(0.01, 1),
@@ -130,6 +131,7 @@ namespace servodrift
     const std::string t = prm.get("Turbulence model");
     turbulence = t == "k-epsilon"                 ? Turbulence::k_epsilon :
                  t == "k-epsilon-launder-sharma" ? Turbulence::k_epsilon_launder_sharma :
+                 t == "k-omega-sst"              ? Turbulence::k_omega_sst :
                                                    Turbulence::laminar;
     turbulence_relaxation = prm.get_double("Turbulence relaxation");
     turbulent_viscosity_relaxation = prm.get_double("Turbulent viscosity relaxation");

@@ -24,8 +24,8 @@ namespace servodrift
     unsigned int report_interval;   ///< print the residuals every n iterations (0: never)
     unsigned int monitor_iterations; ///< window over which monitored quantities must settle [1]
     double monitor_tolerance;       ///< their largest relative change over that window [1]
-    enum class Turbulence { laminar, k_epsilon, k_epsilon_launder_sharma };
-    Turbulence turbulence;          ///< laminar; standard k-epsilon, two-layer; Launder-Sharma k-epsilon
+    enum class Turbulence { laminar, k_epsilon, k_epsilon_launder_sharma, k_omega_sst };
+    Turbulence turbulence;          ///< laminar; standard k-epsilon, two-layer; Launder-Sharma k-epsilon; k-omega SST
     double turbulence_relaxation;   ///< under-relaxation of the k and epsilon equations [1]
     double turbulent_viscosity_relaxation; ///< under-relaxation of mu_t [1]
     double vapour_density_ratio;    ///< cavitation: vapour over liquid density in the mixture [1]

@@ -76,11 +76,11 @@ namespace servodrift
                       "liquid fraction carries the mass). Without it (single-phase, D11 as printed) the "
                       "suction ring at the land's inner edge falls far below zero absolute at RV-1's "
                       "pressures (C12) and the flapper force and C_dn follow that unphysical suction. [-]");
-    const char *models = "automatic|laminar|k-epsilon|k-epsilon-launder-sharma";
+    const char *models = "automatic|laminar|k-epsilon|k-epsilon-launder-sharma|k-omega-sst";
     prm.declare_entry("Fixed orifice flow model", "automatic", Patterns::Selection(models),
                       "Field level: flow model of the fixed-orifice cases (D11): laminar, k-epsilon (the "
                       "two-layer standard model of `Flow solver/Turbulence model'), "
-                      "k-epsilon-launder-sharma, or automatic: laminar below the fixed orifice transition "
+                      "k-epsilon-launder-sharma, k-omega-sst, or automatic: laminar below the fixed orifice transition "
                       "Reynolds number (E17, ideal velocity), k-epsilon from it. [-]");
     prm.declare_entry("Fixed orifice transition Reynolds number", "1000", Patterns::Double(0, 1e9),
                       "Field level, automatic flow model: Re_0 (E17) from which the fixed orifice runs "
@@ -145,6 +145,7 @@ namespace servodrift
       return m == "laminar"                  ? FlowModel::laminar :
              m == "k-epsilon"                ? FlowModel::k_epsilon :
              m == "k-epsilon-launder-sharma" ? FlowModel::k_epsilon_launder_sharma :
+             m == "k-omega-sst"              ? FlowModel::k_omega_sst :
                                                FlowModel::automatic;
     };
     fixed_orifice_flow_model = model_of("Fixed orifice flow model");

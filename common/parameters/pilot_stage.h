@@ -34,7 +34,7 @@ namespace servodrift
     bool field_cavitation;          ///< field cases model cavitation at the vapour pressure
     /// flow model of a field case: automatic picks laminar below the transition Reynolds number
     /// (ideal velocity: E17 for the orifice, 2h sqrt(2 dp/rho)/nu for the nozzle) and k-epsilon above
-    enum class FlowModel { automatic, laminar, k_epsilon, k_epsilon_launder_sharma };
+    enum class FlowModel { automatic, laminar, k_epsilon, k_epsilon_launder_sharma, k_omega_sst };
     FlowModel fixed_orifice_flow_model;
     double fixed_orifice_transition_reynolds; ///< [1]
     FlowModel nozzle_flow_model;
