@@ -43,6 +43,16 @@ int main(int argc, char **argv)
   for (int a = 2; a < argc; ++a)
     if (std::string(argv[a]).rfind("Flow solver/Turbulence model=", 0) == 0)
       models = {valve.flow_solver.turbulence};
+  auto name = [](FlowSolverParameters::Turbulence t) {
+    switch (t)
+      {
+        case FlowSolverParameters::Turbulence::laminar: return "laminar";
+        case FlowSolverParameters::Turbulence::k_epsilon: return "k-epsilon";
+        case FlowSolverParameters::Turbulence::k_epsilon_launder_sharma: return "launder-sharma";
+        case FlowSolverParameters::Turbulence::k_omega_sst: return "k-omega-sst";
+      }
+    return "?";
+  };
   for (const auto model : models)
     for (const double resolution : resolutions)
       {
@@ -55,15 +65,13 @@ int main(int argc, char **argv)
           {
             const PilotFieldResult r = nozzle.solve(10.4e6);
             const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            std::printf("%-10s %10.2f %8zu %11u %8u %10.2f %8.4f %9.4f\n",
-                        model == FlowSolverParameters::Turbulence::laminar ? "laminar" : "k-epsilon", resolution,
+            std::printf("%-10s %10.2f %8zu %11u %8u %10.2f %8.4f %9.4f\n", name(model), resolution,
                         nozzle.n_cells(), r.iterations, r.coarse_mesh_iterations, s, r.discharge_coefficient,
                         r.flapper_force);
           }
         catch (const std::exception &e)
           {
-            std::printf("%-10s %10.2f %8zu failed: %s\n", model == FlowSolverParameters::Turbulence::laminar ? "laminar" : "k-epsilon",
-                        resolution, nozzle.n_cells(), e.what());
+            std::printf("%-10s %10.2f %8zu failed: %s\n", name(model), resolution, nozzle.n_cells(), e.what());
           }
         std::fflush(stdout);
       }

@@ -29,6 +29,9 @@ namespace servodrift::flow
     /// Turbulence models: what an inflow brings, k = 3/2 (I u_n)^2 and epsilon = C_mu^(3/4) k^(3/2) / L
     double turbulence_intensity = 0.05; ///< I [1]
     double turbulence_length = 1e-4;    ///< L [m]
+    /// Where set: the inflow's (k [m^2/s^2], epsilon [m^2/s^3]) at a boundary point, in place of
+    /// the intensity and length (a measured inflow profile).
+    std::function<std::pair<double, double>(const Vector2 &x)> turbulence_profile;
 
     static BoundaryCondition wall(Vector2 moving = Vector2::Zero());
     static BoundaryCondition velocity_inlet(std::function<Vector2(const Vector2 &)> profile);

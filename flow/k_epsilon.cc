@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace servodrift::flow
 {
@@ -54,8 +55,13 @@ namespace servodrift::flow
       else if (s.flux[f] < 0 && (boundaries.kind(f) == Kind::velocity_inlet || boundaries.is_pressure_boundary(f)))
         {
           const double u_n = -s.flux[f] / (rho * mesh.face_area[f]);
-          k_b[f] = 1.5 * std::pow(bc.turbulence_intensity * u_n, 2);
-          epsilon_b[f] = std::pow(C_mu, 0.75) * std::pow(k_b[f], 1.5) / bc.turbulence_length;
+          if (bc.turbulence_profile)
+            std::tie(k_b[f], epsilon_b[f]) = bc.turbulence_profile(mesh.face_center[f]);
+          else
+            {
+              k_b[f] = 1.5 * std::pow(bc.turbulence_intensity * u_n, 2);
+              epsilon_b[f] = std::pow(C_mu, 0.75) * std::pow(k_b[f], 1.5) / bc.turbulence_length;
+            }
           k_inflow = std::max(k_inflow, k_b[f]), epsilon_inflow = std::max(epsilon_inflow, epsilon_b[f]);
         }
       else

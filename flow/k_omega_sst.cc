@@ -68,8 +68,16 @@ namespace servodrift::flow
       else if (s.flux[f] < 0 && (boundaries.kind(f) == Kind::velocity_inlet || boundaries.is_pressure_boundary(f)))
         {
           const double u_n = -s.flux[f] / (rho * mesh.face_area[f]);
-          k_b[f] = 1.5 * std::pow(bc.turbulence_intensity * u_n, 2);
-          omega_b[f] = std::sqrt(k_b[f]) / (std::pow(beta_star, 0.25) * bc.turbulence_length);
+          if (bc.turbulence_profile)
+            {
+              const auto [k_in, epsilon_in] = bc.turbulence_profile(mesh.face_center[f]);
+              k_b[f] = k_in, omega_b[f] = epsilon_in / (beta_star * std::max(k_in, vanishing));
+            }
+          else
+            {
+              k_b[f] = 1.5 * std::pow(bc.turbulence_intensity * u_n, 2);
+              omega_b[f] = std::sqrt(k_b[f]) / (std::pow(beta_star, 0.25) * bc.turbulence_length);
+            }
           k_inflow = std::max(k_inflow, k_b[f]), omega_inflow = std::max(omega_inflow, omega_b[f]);
         }
       else
@@ -77,13 +85,13 @@ namespace servodrift::flow
     });
   }
 
-  void KOmegaSST::blending(const std::vector<Vector2> &grad_k, const std::vector<Vector2> &grad_omega, double omega_floor)
+  void KOmegaSST::blending(const std::vector<Vector2> &grad_k, const std::vector<Vector2> &grad_ln_omega, double omega_floor)
   {
     const double rho = fluid.density, nu = fluid.viscosity / rho;
     for (std::size_t c = 0; c < mesh.n_cells(); ++c)
       {
         const double y = wall_distance[c], kc = std::max(k[c], 0.0), w = std::max(omega[c], omega_floor);
-        const double cross = std::max(2 * rho * sigma_omega2 * grad_k[c].dot(grad_omega[c]) / w, cross_diffusion_floor);
+        const double cross = std::max(2 * rho * sigma_omega2 * grad_k[c].dot(grad_ln_omega[c]), cross_diffusion_floor);
         const double turbulent_scale = std::sqrt(kc) / (beta_star * w * y), viscous_scale = 500 * nu / (y * y * w);
         const double arg1 = std::min(std::max(turbulent_scale, viscous_scale), 4 * rho * sigma_omega2 * kc / (cross * y * y));
         F1[c] = std::tanh(std::pow(arg1, 4));
@@ -129,8 +137,17 @@ namespace servodrift::flow
           G += 2 * std::pow(s.v[c] / mesh.cell_center[c].y(), 2);
         strain_squared[c] = G;
       }
-    const std::vector<Vector2> grad_k = mesh.gradient(k, k_b), grad_omega = mesh.gradient(omega, omega_b);
-    blending(grad_k, grad_omega, omega_floor);
+    // grad k . grad omega / omega of F1 and the cross-diffusion as grad k . grad ln omega: the same
+    // term, but bounded where omega changes by orders of magnitude between cells (the wall layer, a
+    // cavity's edge), where the quotient of omega's gradient and a cell's own omega amplified the
+    // difference from one iteration to the next (omega swung between its floor and 1e12/s in a
+    // cavitating orifice)
+    std::vector<double> ln_omega(n), ln_omega_b(nf, 0.0);
+    for (std::size_t c = 0; c < n; ++c)
+      ln_omega[c] = std::log(std::max(omega[c], omega_floor));
+    mesh.for_each_boundary_face([&](std::size_t f, unsigned int) { ln_omega_b[f] = std::log(std::max(omega_b[f], omega_floor)); });
+    const std::vector<Vector2> grad_k = mesh.gradient(k, k_b), grad_ln_omega = mesh.gradient(ln_omega, ln_omega_b);
+    blending(grad_k, grad_ln_omega, omega_floor);
 
     // face diffusivities mu + sigma mu_t with the blended sigma of the cells
     std::vector<double> gamma(nf);
@@ -171,7 +188,7 @@ namespace servodrift::flow
         const double V = mesh.cell_volume[c], w = std::max(omega[c], omega_floor);
         omega_equation.diagonal[c] += blend(F1[c], beta_1, beta_2) * rho * w * V;
         omega_equation.b[c] += blend(F1[c], alpha_1, alpha_2) * rho * strain_squared[c] * V;
-        const double cross = 2 * (1 - F1[c]) * rho * sigma_omega2 * grad_k[c].dot(grad_omega[c]) / w;
+        const double cross = 2 * (1 - F1[c]) * rho * sigma_omega2 * grad_k[c].dot(grad_ln_omega[c]);
         if (cross > 0)
           omega_equation.b[c] += cross * V;
         else

@@ -39,8 +39,9 @@ namespace servodrift::flow
 
   private:
     void boundary_values(const FlowState &state, double &k_inflow, double &omega_inflow);
-    /// F1 and F2 of each cell from k, omega (at least `omega_floor'), their gradients and the wall distance.
-    void blending(const std::vector<Vector2> &grad_k, const std::vector<Vector2> &grad_omega, double omega_floor);
+    /// F1 and F2 of each cell from k, omega (at least `omega_floor'), the gradients of k and ln omega
+    /// and the wall distance.
+    void blending(const std::vector<Vector2> &grad_k, const std::vector<Vector2> &grad_ln_omega, double omega_floor);
 
     FlowSolverParameters settings;
     std::vector<double> wall_distance;    ///< per cell [m]

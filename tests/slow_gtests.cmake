@@ -2,6 +2,12 @@
 # includes this file after it has discovered the tests; tests/CMakeLists.txt).
 foreach(name PilotFieldStage.OrificePathOverTemperatureKeepsTheAnswer Calibration.NoisyDataCoverTheTruth
              PilotField.MeshConvergence PilotField.FixedOrificeFollowsLichtarowiczWithKEpsilon
-             PilotField.CaughtCyclesLeaveTheAnswerUnchanged PilotField.GridSequencingKeepsTheFineMeshAnswer)
+             PilotField.CaughtCyclesLeaveTheAnswerUnchanged PilotField.GridSequencingKeepsTheFineMeshAnswer
+             TurbulenceValidation/BackwardFacingStep.ReattachmentLength/TwoLayer
+             TurbulenceValidation/BackwardFacingStep.ReattachmentLength/SST
+             TurbulenceValidation/ImpingingJet.WallJetProfiles/TwoLayer
+             TurbulenceValidation/ImpingingJet.WallJetProfiles/SST
+             TurbulenceValidation/SharpEdgedOrifice.LichtarowiczAndNurick/TwoLayer
+             TurbulenceValidation/SharpEdgedOrifice.LichtarowiczAndNurick/SST)
   set_tests_properties(${name} PROPERTIES LABELS "verification;slow")
 endforeach()
