@@ -50,13 +50,14 @@ namespace servodrift
       throw InputError(error);
   }
 
-  void write_table(const ValveDescription &valve, Table &table, const std::string &stage_and_level)
+  void write_table(const ValveDescription &valve, Table &table, const std::string &stage_and_level,
+                   const std::string &variant)
   {
     table.producer = producer_string(stage_and_level);
     table.parameters_sha256 = valve.parameters_sha256;
     on_rank_zero([&] {
       prepare_output_directory(tables_directory(valve));
-      table.write(table_path(valve, table.name()));
+      table.write(table_path(valve, table.name() + (variant.empty() ? "" : "." + variant)));
     });
   }
 

@@ -17,7 +17,8 @@ namespace servodrift
 
   /// Stamps the table (producer "<stage>/<level>", parameter hash), writes it on rank 0 and waits
   /// until every rank can read it.
-  void write_table(const ValveDescription &valve, Table &table, const std::string &stage_and_level);
+  void write_table(const ValveDescription &valve, Table &table, const std::string &stage_and_level,
+                   const std::string &variant = "");
 
   /// Writes parameters.prm (as used) into the output directory (rank 0).
   void write_parameters_file(const ValveDescription &valve);

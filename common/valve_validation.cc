@@ -103,7 +103,10 @@ namespace servodrift
       if (!(list->back() == 1))
         refuse(entry, "ends with " + format_number(list->back()) +
                         "; it must end with 1 (p_s - p_r) for `servodrift run': the pilot bridge's control "
-                        "pressure may lie anywhere between return and supply");
+                        "pressure may lie anywhere between return and supply");    if (!v.pilot.model_form_alternatives.empty() && v.pilot.model_level != "field")
+      refuse("Pilot stage/Model-form alternatives",
+             "lists other flow models, which only the field level has; set `Pilot stage/Model level' = field or "
+             "leave it empty");
   }
 
   void validate(const ValveDescription &v)

@@ -223,7 +223,7 @@ namespace servodrift::flow
       {
         k[c] = std::max(k[c], k_floor);
         omega[c] = std::max(omega[c], omega_floor);
-        const double target = rho * a1 * k[c] / std::max(a1 * omega[c], std::sqrt(strain_squared[c]) * F2[c]);
+        const double target = rho * a1 * k[c] / std::max({a1 * omega[c], std::sqrt(strain_squared[c]) * F2[c], vanishing});
         cells_at_limit += target > mu_t_limit;
         mu_t[c] += settings.turbulent_viscosity_relaxation * (std::min(target, mu_t_limit) - mu_t[c]);
       }

@@ -28,7 +28,8 @@ namespace servodrift::flow
     }
   } // namespace
 
-  void write_case_summary(const ValveDescription &valve, PilotGeometry g, const CaseRows &records)
+  void write_case_summary(const ValveDescription &valve, PilotGeometry g, const CaseRows &records,
+                          const std::string &variant)
   {
     const bool orifice = g == PilotGeometry::fixed_orifice;
     const std::string name = orifice ? "fixed_orifice" : "nozzle_flapper";
@@ -78,7 +79,7 @@ namespace servodrift::flow
           if (converged && writes_fields(valve, r[temperature]))
             datasets.emplace_back(datasets.size(), vtu_name(g, r[temperature], r[gap], r[pressure_difference]));
         }
-      write_file_atomically(flow_directory(valve) + "/" + name + "_cases.csv", doc.text());
+      write_file_atomically(flow_directory(valve) + "/" + name + "_cases" + variant + ".csv", doc.text());
       if (!datasets.empty())
         write_pvd_atomically(flow_directory(valve) + "/" + name + ".pvd", datasets);
     });

@@ -132,8 +132,9 @@ namespace servodrift::flow
     std::string failure_output; ///< the VTU of the case being solved, if it fails
   };
 
-  /// flow/<geometry>_cases.csv and the .pvd collection of the VTU files written (rank 0).
-  void write_case_summary(const ValveDescription &valve, PilotGeometry g, const CaseRows &records);
+  /// flow/<geometry>_cases<variant>.csv and the .pvd collection of the VTU files written (rank 0).
+  void write_case_summary(const ValveDescription &valve, PilotGeometry g, const CaseRows &records,
+                          const std::string &variant = "");
   /// The warnings and notes of a geometry's cases on stderr (rank 0): not converged, beyond the
   /// verified range, cavitating.
   void report_counts(const char *what, const CaseRows &records, bool valve_cavitation);

@@ -224,11 +224,11 @@ namespace servodrift::flow
 
   } // namespace
 
-  PilotTables compute_pilot_field_tables(const ValveDescription &valve)
+  PilotTables compute_pilot_field_tables(const ValveDescription &valve, const std::string &variant)
   {
     const auto [orifice, nozzle] = run_chains(valve);
-    write_case_summary(valve, PilotGeometry::fixed_orifice, orifice);
-    write_case_summary(valve, PilotGeometry::nozzle_flapper, nozzle);
+    write_case_summary(valve, PilotGeometry::fixed_orifice, orifice, variant);
+    write_case_summary(valve, PilotGeometry::nozzle_flapper, nozzle, variant);
     report_counts("fixed-orifice", orifice, valve.pilot.field_cavitation);
     report_counts("nozzle-flapper", nozzle, valve.pilot.field_cavitation);
     return {fixed_orifice_table(valve, orifice), nozzle_flapper_table(valve, nozzle)};

@@ -23,5 +23,6 @@
 
 namespace servodrift::flow
 {
-  PilotTables compute_pilot_field_tables(const ValveDescription &valve);
+  /// `variant': appended to the cases' file names (flow/<geometry>_cases<variant>.csv).
+  PilotTables compute_pilot_field_tables(const ValveDescription &valve, const std::string &variant = "");
 } // namespace servodrift::flow

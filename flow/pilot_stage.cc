@@ -80,5 +80,21 @@ namespace servodrift::flow
     PilotTables tables = compute_pilot_tables(valve);
     write_table(valve, tables.fixed_orifice, producer);
     write_table(valve, tables.nozzle_flapper, producer);
+    // the model-form alternatives: the same sweep with another flow model, tables beside the
+    // default's (the system stage reports their spread)
+    for (const std::string &model : valve.pilot.model_form_alternatives)
+      {
+        ValveDescription alternative = valve;
+        using FlowModel = PilotStageParameters::FlowModel;
+        const FlowModel m = model == "laminar"                  ? FlowModel::automatic :
+                            model == "k-epsilon"                ? FlowModel::k_epsilon :
+                            model == "k-epsilon-launder-sharma" ? FlowModel::k_epsilon_launder_sharma :
+                                                                  FlowModel::k_omega_sst;
+        alternative.pilot.fixed_orifice_flow_model = alternative.pilot.nozzle_flow_model = m;
+        alternative.output.flow_fields = OutputParameters::FlowFields::none;
+        PilotTables other = compute_pilot_field_tables(alternative, "." + model);
+        write_table(valve, other.fixed_orifice, producer + " (" + model + ")", model);
+        write_table(valve, other.nozzle_flapper, producer + " (" + model + ")", model);
+      }
   }
 } // namespace servodrift::flow

@@ -276,6 +276,7 @@ namespace servodrift::system
       tolerance_section(out, valve, *r.tolerances);
     else
       out << "## Tolerances\n\nNot computed in this run (`Tolerances/Enabled`, or `servodrift tolerances`).\n\n";
+    model_form_section(out, r.model_form);
 
     out << "## Plots\n\n";
     for (const auto &image : plots.images)

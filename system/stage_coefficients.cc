@@ -17,6 +17,7 @@ namespace servodrift::system
     c.null_control_pressure = null.left_pressure;
     c.orifice_discharge = f.orifice_discharge(T, p_s - null.left_pressure);
     c.nozzle_discharge = f.nozzle_discharge(T, null.left_gap, null.left_pressure - p_r);
+    c.null_flapper_force = null.left_force;
     c.quiescent_flow = null.left_flow + null.right_flow;
     const BridgeState deflected = model.bridge(T, 10e-6);
     c.force_difference_10um = deflected.left_force - deflected.right_force;

@@ -18,6 +18,7 @@ namespace servodrift::system
     double null_control_pressure;    ///< p_L = p_R at x_f = 0 [Pa]
     double orifice_discharge;        ///< C_d0 at null [1]
     double nozzle_discharge;         ///< C_dn at null [1]
+    double null_flapper_force;       ///< the flapper force of one nozzle at null [N]
     double quiescent_flow;           ///< both nozzles at null [m^3/s]
     double force_difference_10um;    ///< F_L - F_R at x_f = 10 um (self-consistent bridge) [N]
     double net_stiffness;            ///< K_a - K_m + r^2 K_f, static stability (1.12) [N*m/rad]

@@ -90,6 +90,17 @@ namespace servodrift::system
     return t;
   }
 
+  StageTables StageTables::with_pilot_variant(const std::string &directory, const std::string &variant) const
+  {
+    StageTables t = *this;
+    t.warnings.clear();
+    t.fixed_orifice = Table::read(directory + "/fixed_orifice." + variant + ".csv", "fixed_orifice");
+    t.nozzle_flapper = Table::read(directory + "/nozzle_flapper." + variant + ".csv", "nozzle_flapper");
+    for (const Table *table : {&t.fixed_orifice, &t.nozzle_flapper})
+      check_physical(*table, directory + "/" + table->name() + "." + variant + ".csv");
+    return t;
+  }
+
   namespace
   {
     /// Q/sqrt(dp): smooth in dp where Q ~ sqrt(dp) is not; 0 in the laminar limit dp -> 0.

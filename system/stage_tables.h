@@ -21,6 +21,9 @@ namespace servodrift::system
 
     /// Reads and checks the four tables from `directory'.
     static StageTables read(const std::string &directory, const ValveDescription &valve);
+    /// These tables with the pilot stage's of another flow model, <table>.<variant>.csv in
+    /// `directory' (the model-form alternatives), read and checked alike.
+    StageTables with_pilot_variant(const std::string &directory, const std::string &variant) const;
   };
 
   /// Interpolants of the tables: what the valve model evaluates.

@@ -28,6 +28,7 @@ namespace servodrift::system
       results.table_producers.push_back(t->name() + ": " + t->producer);
     for (double T : valve.sweeps.drift_temperatures)
       results.coefficients.push_back(stage_coefficients(model, T));
+    results.model_form = model_form_coefficients(valve, tables, results.coefficients, tables_directory, results.warnings);
     results.drift_map = compute_drift_map(model, valve.output.progress);
     if (analyses.dynamics)
       results.dynamics = compute_dynamics(model, valve.output.progress);
@@ -172,11 +173,15 @@ namespace servodrift::system
         write_dynamics_tables(valve, *results.dynamics, dir);
       if (results.tolerances)
         write_tolerance_tables(valve, *results.tolerances, dir);
+      if (results.model_form.size() > 1)
+        write_model_form_table(valve, results.model_form, dir);
       auto plots = write_plots(valve, results, dir + "/plots");
       if (results.dynamics)
         write_dynamics_plots(valve, *results.dynamics, dir + "/plots", plots);
       if (results.tolerances)
         write_tolerance_plots(valve, *results.tolerances, dir + "/plots", plots);
+      if (results.model_form.size() > 1)
+        write_model_form_plots(valve, results.model_form, dir + "/plots", plots);
       if (results.calibration)
         write_calibration(valve, *results.calibration, valve.output.directory + "/calibration", plots);
       write_report(valve, results, plots, valve.output.directory + "/report.md");

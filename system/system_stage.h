@@ -5,6 +5,7 @@
 #include "common/valve_description.h"
 #include "system/drift_map.h"
 #include "system/dynamics.h"
+#include "system/model_form.h"
 #include "system/stage_coefficients.h"
 #include "system/stage_tables.h"
 #include "system/calibration.h"
@@ -26,6 +27,9 @@ namespace servodrift::system
     std::optional<DynamicsResults> dynamics;     ///< when asked for (issue 23)
     std::optional<ToleranceResults> tolerances;  ///< when asked for (issue 25)
     const CalibrationResults *calibration = nullptr; ///< the fit that made this valve (issue 26)
+    /// the default's and each model-form alternative's coefficients (issue 28; only the default's
+    /// when `Pilot stage/Model-form alternatives' is empty)
+    std::vector<ModelFormCoefficients> model_form;
   };
 
   /// The analyses beyond the static ones (stage coefficients, operating points, drift maps).

@@ -2,6 +2,8 @@
 
 #include "common/parameters/parameter_helpers.h"
 
+#include <deal.II/base/utilities.h>
+
 namespace servodrift
 {
   using namespace parameters;
@@ -104,6 +106,16 @@ namespace servodrift
                       "cheap on the nozzle's small mesh, converge quickly; a shorter window switches to "
                       "them sooner, with the same answer. On the orifice a window this short makes the "
                       "sweep slower (doc/changes.md, issue 5). 0: never. [1]");
+    prm.declare_entry("Model-form alternatives", "",
+                      Patterns::List(Patterns::Selection("laminar|k-epsilon|k-epsilon-launder-sharma|k-omega-sst"), 0, 3),
+                      "Field level: other flow models whose fixed_orifice and nozzle_flapper tables the flow "
+                      "stage also computes at every table point (tables/<table>.<model>.csv, "
+                      "flow/<geometry>_cases.<model>.csv), so that the system stage reports the spread of "
+                      "C_dn, the flapper force and K_f between them and the default as the model-form "
+                      "uncertainty (system/model_form_spread.csv, a band in the report). laminar: laminar "
+                      "below each geometry's transition Reynolds number, where it is plausible, the default "
+                      "model above; the others for every case of both geometries. Each costs about one more "
+                      "flow stage. Empty: none. [-]");
     prm.declare_entry("Fixed orifice law", "lichtarowicz", Patterns::Selection("lichtarowicz|paper-fit"),
                       "Reduced-order fixed-orifice discharge coefficient: lichtarowicz (E21, RV-1) or "
                       "paper-fit (the paper's cubic E26 in Re_0, clamped to its window Re_0 in "
@@ -153,6 +165,9 @@ namespace servodrift
     nozzle_flow_model = model_of("Nozzle flow model");
     nozzle_transition_reynolds = prm.get_double("Nozzle transition Reynolds number");
     nozzle_stall_window = static_cast<unsigned int>(prm.get_integer("Nozzle stall window"));
+    model_form_alternatives.clear();
+    for (const std::string &name : dealii::Utilities::split_string_list(prm.get("Model-form alternatives")))
+      model_form_alternatives.push_back(name);
     fixed_orifice_law =
       prm.get("Fixed orifice law") == "paper-fit" ? OrificeLaw::paper_fit : OrificeLaw::lichtarowicz;
     nozzle_law = prm.get("Nozzle law") == "paper-fit" ? NozzleLaw::paper_fit : NozzleLaw::curtain;

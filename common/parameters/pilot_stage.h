@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <vector>
 namespace dealii { class ParameterHandler; }
 
 namespace servodrift
@@ -40,6 +41,9 @@ namespace servodrift
     FlowModel nozzle_flow_model;
     double nozzle_transition_reynolds;        ///< [1]
     unsigned int nozzle_stall_window;         ///< Flow solver's stall window for the nozzle cases [1]
+    /// field level: other flow models whose tables the flow stage also computes (model-form
+    /// uncertainty); each by its name in the tables' file names (`laminar': the automatic switch)
+    std::vector<std::string> model_form_alternatives;
 
     OrificeLaw fixed_orifice_law;
     NozzleLaw nozzle_law;

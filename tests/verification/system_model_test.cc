@@ -274,3 +274,42 @@ TEST(DriftMap, BrakePressureDeviationIsOddToFirstOrder)
   const double r1 = ratio(0.004), r2 = ratio(0.002);
   EXPECT_NEAR(r1 / r2, 2.0, 0.2) << r1 << " " << r2;
 }
+
+TEST(ModelForm, SpreadOfAlternativeTables)
+{
+  // The model-form uncertainty (issue 28) reads each alternative's pilot tables through the same
+  // valve model. An alternative identical to the default spreads by nothing; one whose flapper forces
+  // are all 10 % larger moves the null's force and K_f = d(F_L - F_R)/dx_f by exactly 10 % (the bridge's
+  // pressures do not depend on the force) and C_dn not at all; an alternative listed without its
+  // tables is left out with a warning.
+  auto v = test::valve({"Sweeps/Drift temperatures=40, 120", "Sweeps/Deviation angles=0"});
+  const std::string dir = test::write_reduced_order_tables(v);
+  Table nozzle = Table::read(dir + "/nozzle_flapper.csv", "nozzle_flapper");
+  Table orifice = Table::read(dir + "/fixed_orifice.csv", "fixed_orifice");
+  nozzle.write(dir + "/nozzle_flapper.same.csv");
+  orifice.write(dir + "/fixed_orifice.same.csv");
+  const std::size_t force = nozzle.column_index("flapper_force");
+  for (auto &row : nozzle.rows)
+    row[force] *= 1.1;
+  nozzle.write(dir + "/nozzle_flapper.stronger.csv");
+  orifice.write(dir + "/fixed_orifice.stronger.csv");
+  v.pilot.model_form_alternatives = {"same", "stronger", "absent"};
+  const auto r = system::compute(v, dir);
+  ASSERT_EQ(r.model_form.size(), 3u);
+  EXPECT_EQ(r.model_form[1].model, "same");
+  EXPECT_EQ(r.model_form[2].model, "stronger");
+  bool warned = false;
+  for (const auto &w : r.warnings)
+    warned = warned || w.find("absent") != std::string::npos;
+  EXPECT_TRUE(warned);
+  for (std::size_t k = 0; k < 2; ++k)
+    {
+      const auto &d = r.model_form[0].coefficients[k], &same = r.model_form[1].coefficients[k],
+                 &stronger = r.model_form[2].coefficients[k];
+      EXPECT_EQ(same.nozzle_discharge, d.nozzle_discharge);
+      EXPECT_EQ(same.flow_force_stiffness, d.flow_force_stiffness);
+      EXPECT_NEAR(stronger.null_flapper_force / d.null_flapper_force, 1.1, 1e-9);
+      EXPECT_NEAR(stronger.flow_force_stiffness / d.flow_force_stiffness, 1.1, 1e-6);
+      EXPECT_NEAR(stronger.nozzle_discharge, d.nozzle_discharge, 1e-12);
+    }
+}
