@@ -81,6 +81,8 @@ namespace servodrift
     doc.comments = {"servodrift-table " + table_schema->name, "schema " + std::to_string(table_schema->version),
                     "producer " + producer, "parameters-sha256 " + parameters_sha256,
                     "rows " + std::to_string(rows.size())};
+    for (const auto &note : notes)
+      doc.comments.push_back("note " + note);
     for (const auto &c : table_schema->columns)
       doc.columns.push_back(c.header());
     for (const auto &r : rows)
@@ -162,7 +164,16 @@ namespace servodrift
     const long declared_rows = std::strtol(rows_text.c_str(), &end, 10);
     if (rows_text.empty() || *end != '\0' || declared_rows < 0)
       throw InputError(where(line_number) + "`# rows' must give a row count, found `" + rows_text + "'");
-    const std::vector<std::string> declared = split(header_line("columns"), ' ');
+    std::string columns_text = header_line("");
+    while (columns_text.rfind("note ", 0) == 0 || columns_text == "note")
+      {
+        table.notes.push_back(trim(columns_text.substr(4)));
+        columns_text = header_line("");
+      }
+    if (columns_text.rfind("columns", 0) != 0)
+      throw InputError(where(line_number) + "expected `# columns ...' in the table header, found `# " +
+                       columns_text.substr(0, 58) + "'");
+    const std::vector<std::string> declared = split(trim(columns_text.substr(7)), ' ');
     const int columns_line = line_number;
 
     // Map every schema column to its position in the file; extra columns are ignored.

@@ -68,6 +68,9 @@ namespace servodrift
 
     std::string producer;          ///< "servodrift <version> (git <rev>) <stage>/<level>"
     std::string parameters_sha256; ///< of the valve description used
+    /// `# note ...' lines of the header, after `# rows': what a reader should know of the numbers
+    /// (e.g. the discretisation error of the mesh that made them)
+    std::vector<std::string> notes;
     std::vector<std::vector<double>> rows;
 
     /// Index of a column by name ("torque"); throws std::logic_error for a name not in the schema.

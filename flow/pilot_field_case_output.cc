@@ -26,6 +26,24 @@ namespace servodrift::flow
         n += r[column] == value;
       return n;
     }
+
+    /// The discretisation error of the nozzle-flapper cases at the valve's mesh resolution, as measured
+    /// on RV-1 by bench/bench_mesh_convergence (40 degC, 10.4 MPa, default flow models, Richardson's
+    /// extrapolation from resolutions 1, 2 and 3; doc/validation.md, "Mesh convergence"). A record of
+    /// that measurement, for the table's header: re-run the bench when the mesh or the solver changes.
+    std::string nozzle_mesh_error_note(double resolution)
+    {
+      const std::string measured = "mesh resolution " + format_number(resolution) +
+                                   ": discretisation error measured on RV-1 with the default flow models "
+                                   "(bench/bench_mesh_convergence, doc/validation.md): ";
+      if (resolution == 1)
+        return measured + "C_dn -2.8 % to +0.5 %, flapper force -0.2 % to +1.3 % at gaps 10 and 40 um; "
+                          "about 1.6 % in C_dn and 2.8 % in force at 70 um (two-level estimate)";
+      if (resolution == 2)
+        return measured + "C_dn and flapper force within 0.7 % at gaps 10 and 40 um";
+      return "mesh resolution " + format_number(resolution) +
+             ": discretisation error not measured at this resolution (measured at 1 and 2: doc/validation.md)";
+    }
   } // namespace
 
   void write_case_summary(const ValveDescription &valve, PilotGeometry g, const CaseRows &records,
@@ -111,6 +129,8 @@ namespace servodrift::flow
   Table fixed_orifice_table(const ValveDescription &valve, const CaseRows &records)
   {
     Table table(schemas::fixed_orifice);
+    table.notes.push_back("mesh resolution " + format_number(valve.pilot.field_resolution) +
+                          ": the orifice's discretisation error is not measured (doc/validation.md)");
     std::size_t next = 0;
     for (double T : valve.sweeps.table_temperatures)
       {
@@ -127,6 +147,7 @@ namespace servodrift::flow
   Table nozzle_flapper_table(const ValveDescription &valve, const CaseRows &records)
   {
     Table table(schemas::nozzle_flapper);
+    table.notes.push_back(nozzle_mesh_error_note(valve.pilot.field_resolution));
     const auto gaps = scaled(valve.sweeps.field_gap_fractions, valve.pilot.null_gap);
     const auto dps = scaled(valve.sweeps.field_nozzle_pressure_fractions, span(valve));
     std::size_t next = 0;

@@ -7,8 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -76,6 +74,22 @@ TEST(Table, HeaderIsReadableAndStamped)
   EXPECT_EQ(text.rfind("# servodrift-table spring_tube\n# schema 1\n# producer servodrift test\n", 0), 0u);
   EXPECT_NE(text.find("# columns temperature[degC] stiffness[N*m/rad] flag[1]\n"), std::string::npos);
   EXPECT_NE(text.find("\ntemperature[degC],stiffness[N*m/rad],flag[1]\n"), std::string::npos);
+}
+
+TEST(Table, NotesSurviveTheRoundTripAndAMissingColumnsLineIsRefused)
+{
+  Table t = sample();
+  t.notes = {"mesh resolution 1: C_dn within 3 %", "second note"};
+  const std::string text = t.to_csv();
+  EXPECT_NE(text.find("# rows 3\n# note mesh resolution 1: C_dn within 3 %\n# note second note\n# columns "),
+            std::string::npos)
+    << text;
+  const Table back = Table::read(write_text(text), "spring_tube");
+  EXPECT_EQ(back.notes, t.notes);
+  EXPECT_EQ(back.to_csv(), text);
+  EXPECT_NE(refusal(replace(text, "# columns", "# colons")).find(":8: expected `# columns ...' in the table header"),
+            std::string::npos)
+    << refusal(replace(text, "# columns", "# colons"));
 }
 
 TEST(Table, RefusesWrongTableAndUnknownSchema)
