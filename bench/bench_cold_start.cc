@@ -1,10 +1,14 @@
 // Robustness of single field-level pilot cases started from rest (issue 28, item 6): the cases the
-// issue lists as failing, each solved alone from rest at 40 degC on RV-1 (no continuation from a
-// neighbouring case), with every flow model. Prints per case the outcome (converged, or the
-// solver's reason), the iterations, the wall time, C_d and the flapper force. Not a test (minutes).
-//   OMP_THREAD_LIMIT=1 build/bench/bench_cold_start [case numbers, default all, e.g. 1,4,7]
+// issue lists as failing, each solved alone from rest on RV-1 (40 degC unless stated; no continuation from a
+// neighbouring case) on the flow stage's path (flow/pilot_field_cases.h's Chain: the case from rest
+// with its pressure continuation, and once more with half the continuation steps if that fails),
+// with every flow model. Prints per case the outcome (converged, or flagged 2 with the solver's
+// reason on stderr), the iterations, the wall time, C_d and the flapper force. Not a test (minutes).
+//   OMP_THREAD_LIMIT=1 build/bench/bench_cold_start [case numbers, default all, e.g. 1,4,7] [parameter=value ...]
+// (extra arguments are `--set' entries, e.g. 'Flow solver/Report interval=100' for the residual history)
 #include "common/valve_description.h"
 #include "flow/pilot_field.h"
+#include "flow/pilot_field_cases.h"
 
 #include <chrono>
 #include <cstdio>
@@ -29,7 +33,21 @@ namespace
     double pressure_difference; ///< [Pa]
     bool cavitation;
     double realizability; ///< Flow solver/Realizability coefficient (0: off)
+    double temperature = 40; ///< [degC]
   };
+
+  PilotStageParameters::FlowModel flow_model(Turbulence t)
+  {
+    using M = PilotStageParameters::FlowModel;
+    switch (t)
+      {
+        case Turbulence::laminar: return M::laminar;
+        case Turbulence::k_epsilon: return M::k_epsilon;
+        case Turbulence::k_epsilon_launder_sharma: return M::k_epsilon_launder_sharma;
+        case Turbulence::k_omega_sst: return M::k_omega_sst;
+      }
+    return M::automatic;
+  }
 
   const char *name(Turbulence t)
   {
@@ -60,43 +78,46 @@ int main(int argc, char **argv)
     {"SST null, resolution 1", nozzle, Turbulence::k_omega_sst, 1, 40e-6, 10.4e6, true, 0.6},
     {"SST 40 um at full pressure, resolution 1", nozzle, Turbulence::k_omega_sst, 1, 40e-6, 20.6e6, true, 0.6},
     {"SST orifice cavitating, resolution 1", orifice, Turbulence::k_omega_sst, 1, 0, 10.3e6, true, 0.6},
+    {"SST 40 um at 120 degC, 3.09 MPa, resolution 1", nozzle, Turbulence::k_omega_sst, 1, 40e-6, 3.09e6, true, 0.6, 120},
+    {"SST 40 um at 120 degC, 3.09 MPa, single phase", nozzle, Turbulence::k_omega_sst, 1, 40e-6, 3.09e6, false, 0.6, 120},
+    {"SST orifice cavitating at 20.6 MPa, resolution 1", orifice, Turbulence::k_omega_sst, 1, 0, 20.6e6, true, 0.6},
+    {"k-epsilon 40 um at 120 degC, 3.09 MPa, resolution 1", nozzle, Turbulence::k_epsilon, 1, 40e-6, 3.09e6, true, 0.6, 120},
   };
   std::set<std::size_t> chosen;
-  if (argc > 1)
+  std::vector<std::string> settings{"Output/Progress=none", "Output/Flow fields=none"};
+  for (int a = 2; a < argc; ++a)
+    settings.push_back(argv[a]);
+  if (argc > 1 && std::string(argv[1]) != "all")
     for (std::string list = argv[1]; !list.empty();)
       {
         const std::size_t comma = list.find(',');
         chosen.insert(std::strtoul(list.substr(0, comma).c_str(), nullptr, 10));
         list = comma == std::string::npos ? "" : list.substr(comma + 1);
       }
-  std::printf("RV-1 at 40 degC, each case alone from rest\n");
+  std::printf("RV-1, each case alone from rest (40 degC unless its name says otherwise)\n");
   for (std::size_t n = 1; n <= cases.size(); ++n)
     {
       if (!chosen.empty() && !chosen.count(n))
         continue;
       const ColdStart &s = cases[n - 1];
-      ValveDescription v = load_valve_description(
-        "", {"Output/Progress=none", "Flow solver/Realizability coefficient=" + std::to_string(s.realizability)});
-      v.pilot.field_cavitation = s.cavitation;
-      PilotFieldCase c = pilot_field_case(v, 40);
-      c.resolution = s.resolution;
-      c.turbulence = s.model;
+      std::vector<std::string> these = settings;
+      these.insert(these.begin() + 1, "Flow solver/Realizability coefficient=" + std::to_string(s.realizability));
+      ValveDescription valve = load_valve_description("", these);
+      valve.pilot.field_cavitation = s.cavitation;
+      valve.pilot.field_resolution = s.resolution;
+      valve.pilot.fixed_orifice_flow_model = valve.pilot.nozzle_flow_model = flow_model(s.model);
       const auto t0 = std::chrono::steady_clock::now();
-      PilotField field(v, s.geometry, c, s.gap);
-      std::printf("%2zu %-50s %-15s %7zu cells: ", n, s.what, name(s.model), field.n_cells());
+      std::printf("%2zu %-50s %-15s: ", n, s.what, name(s.model));
       std::fflush(stdout);
-      try
-        {
-          const PilotFieldResult r = field.solve(s.pressure_difference);
-          std::printf("converged, %u iterations, %.1f s, C_d %.5f, F %.5f N\n", r.iterations + r.coarse_mesh_iterations,
-                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
-                      r.discharge_coefficient, r.flapper_force);
-        }
-      catch (const std::exception &e)
-        {
-          std::printf("FAILED after %.1f s: %s\n",
-                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), e.what());
-        }
+      Chain chain(valve, s.geometry, s.temperature);
+      using namespace case_record;
+      const std::vector<double> r = chain.solve(s.gap, s.pressure_difference);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (r[flag] == flags::not_converged)
+        std::printf("FAILED (flag 2) after %.1f s\n", seconds);
+      else
+        std::printf("converged, %.0f iterations, %.1f s, C_d %.5f, F %.5f N\n", r[iterations], seconds,
+                    r[discharge_coefficient], r[flapper_force]);
       std::fflush(stdout);
     }
 }
