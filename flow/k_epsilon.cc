@@ -7,18 +7,7 @@
 namespace servodrift::flow
 {
   using namespace k_epsilon;
-
-  namespace
-  {
-    /// A start from nothing: turbulence of this intensity of the local flow speed
-    constexpr double seed_intensity = 0.05;
-    /// k and epsilon are kept above this fraction of their inflow's (or largest) value
-    constexpr double floor_fraction = 1e-12;
-    /// the residuals are relative to at least this fraction of the largest value
-    constexpr double level_fraction = 1e-6;
-    /// a combination of Anderson acceleration may lower k and epsilon at most tenfold
-    constexpr double accelerated_decrease = 0.1;
-  } // namespace
+  using namespace two_equation;
 
   KEpsilonModel::KEpsilonModel(const FvMesh &mesh, const FluidProperties &fluid, const BoundaryConditions &boundaries,
                                const FlowSolverParameters &settings_, const MatrixPattern &pattern)
@@ -180,30 +169,14 @@ namespace servodrift::flow
 
   void KEpsilonModel::scale_pressure_level(double s)
   {
-    const double root = std::sqrt(s);
-    auto scale = [](std::vector<double> &x, double factor) {
-      for (double &value : x)
-        value *= factor;
-    };
-    scale(mu_t, root);
-    scale(k, s), scale(k_b, s);
-    scale(epsilon, s * root), scale(epsilon_b, s * root);
-    update_face_viscosity();
+    scale_two_equation_fields(s, k, k_b, epsilon, epsilon_b, s * std::sqrt(s));
   }
 
   std::vector<std::vector<double> *> KEpsilonModel::accelerated_fields() { return {&k, &epsilon, &mu_t}; }
 
   void KEpsilonModel::bound_accelerated(const std::vector<std::vector<double>> &before)
   {
-    // a combination may overshoot below zero where k or epsilon is small: keep the positive value
-    // it came from, scaled down at most tenfold
-    for (std::size_t c = 0; c < mesh.n_cells(); ++c)
-      {
-        k[c] = std::max(k[c], accelerated_decrease * before[0][c]);
-        epsilon[c] = std::max(epsilon[c], accelerated_decrease * before[1][c]);
-        mu_t[c] = std::max(mu_t[c], 0.0);
-      }
-    update_face_viscosity();
+    bound_two_equation_fields(k, epsilon, before);
   }
 
   std::vector<std::pair<std::string, const std::vector<double> *>> KEpsilonModel::output_fields() const

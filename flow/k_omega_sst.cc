@@ -7,6 +7,8 @@
 
 namespace servodrift::flow
 {
+  using namespace two_equation;
+
   namespace
   {
     // Menter, Kuntz and Langtry (2003): the inner (k-omega) and the outer (k-epsilon) sets
@@ -19,9 +21,6 @@ namespace servodrift::flow
     constexpr double cross_diffusion_floor = 1e-10;
     /// the wall's omega, this times the sublayer's 6 nu/(beta_1 d^2) (Menter 1994)
     constexpr double wall_omega_factor = 10;
-    // as the k-epsilon models (k_epsilon.cc): the seed, the floors, the residual levels, the bound
-    // after an accelerated combination
-    constexpr double seed_intensity = 0.05, floor_fraction = 1e-12, level_fraction = 1e-6, accelerated_decrease = 0.1;
 
     double blend(double F1, double inner, double outer) { return F1 * inner + (1 - F1) * outer; }
   } // namespace
@@ -254,31 +253,14 @@ namespace servodrift::flow
     update_face_viscosity();
   }
 
-  void KOmegaSST::scale_pressure_level(double s)
-  {
-    // velocities by sqrt(s): k by s, omega (a rate, U/L) and mu_t by sqrt(s)
-    const double root = std::sqrt(s);
-    auto scale = [](std::vector<double> &x, double factor) {
-      for (double &value : x)
-        value *= factor;
-    };
-    scale(mu_t, root);
-    scale(k, s), scale(k_b, s);
-    scale(omega, root), scale(omega_b, root);
-    update_face_viscosity();
-  }
+  /// velocities by sqrt(s): omega, a rate U/L, by sqrt(s)
+  void KOmegaSST::scale_pressure_level(double s) { scale_two_equation_fields(s, k, k_b, omega, omega_b, std::sqrt(s)); }
 
   std::vector<std::vector<double> *> KOmegaSST::accelerated_fields() { return {&k, &omega, &mu_t}; }
 
   void KOmegaSST::bound_accelerated(const std::vector<std::vector<double>> &before)
   {
-    for (std::size_t c = 0; c < mesh.n_cells(); ++c)
-      {
-        k[c] = std::max(k[c], accelerated_decrease * before[0][c]);
-        omega[c] = std::max(omega[c], accelerated_decrease * before[1][c]);
-        mu_t[c] = std::max(mu_t[c], 0.0);
-      }
-    update_face_viscosity();
+    bound_two_equation_fields(k, omega, before);
   }
 
   std::vector<std::pair<std::string, const std::vector<double> *>> KOmegaSST::output_fields() const

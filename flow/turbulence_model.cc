@@ -4,6 +4,7 @@
 #include "flow/k_omega_sst.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace servodrift::flow
 {
@@ -49,6 +50,32 @@ namespace servodrift::flow
                          const double mut = boundaries.kind(f) != BoundaryCondition::Kind::wall ? mu_t[P] : 0.0;
                          mu_face[f] = fluid.viscosity + mut;
                        });
+  }
+
+  void TurbulenceModel::scale_two_equation_fields(double s, std::vector<double> &k, std::vector<double> &k_b,
+                                                  std::vector<double> &second, std::vector<double> &second_b,
+                                                  double second_factor)
+  {
+    auto scale = [](std::vector<double> &x, double factor) {
+      for (double &value : x)
+        value *= factor;
+    };
+    scale(mu_t, std::sqrt(s));
+    scale(k, s), scale(k_b, s);
+    scale(second, second_factor), scale(second_b, second_factor);
+    update_face_viscosity();
+  }
+
+  void TurbulenceModel::bound_two_equation_fields(std::vector<double> &k, std::vector<double> &second,
+                                                  const std::vector<std::vector<double>> &before)
+  {
+    for (std::size_t c = 0; c < mesh.n_cells(); ++c)
+      {
+        k[c] = std::max(k[c], two_equation::accelerated_decrease * before[0][c]);
+        second[c] = std::max(second[c], two_equation::accelerated_decrease * before[1][c]);
+        mu_t[c] = std::max(mu_t[c], 0.0);
+      }
+    update_face_viscosity();
   }
 
   LaminarFlow::LaminarFlow(const FvMesh &mesh, const FluidProperties &fluid, const BoundaryConditions &boundaries)

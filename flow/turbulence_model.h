@@ -15,6 +15,19 @@
 
 namespace servodrift::flow
 {
+  /// The numerical settings the two-equation models (k_epsilon.h, k_omega_sst.h) share.
+  namespace two_equation
+  {
+    /// A start from nothing: turbulence of this intensity of the local flow speed
+    constexpr double seed_intensity = 0.05;
+    /// k and the second field are kept above this fraction of their inflow's (or largest) value
+    constexpr double floor_fraction = 1e-12;
+    /// the residuals are relative to at least this fraction of the largest value
+    constexpr double level_fraction = 1e-6;
+    /// a combination of Anderson acceleration may lower k and the second field at most tenfold
+    constexpr double accelerated_decrease = 0.1;
+  } // namespace two_equation
+
   /// The scaled residuals of a model's two transport equations (0 if it has none).
   struct TurbulenceResiduals
   {
@@ -63,6 +76,15 @@ namespace servodrift::flow
     /// mu_face from mu_t: linear interpolation inside, the cell's at inflows, outflows, the axis and
     /// symmetry planes, none at walls.
     void update_face_viscosity();
+    /// scale_pressure_level of a two-equation model: k (cells and boundary faces) by s, its second
+    /// field by second_factor (epsilon ~ U^3/L: s^(3/2); omega ~ U/L: s^(1/2)), mu_t by sqrt(s).
+    void scale_two_equation_fields(double s, std::vector<double> &k, std::vector<double> &k_b,
+                                   std::vector<double> &second, std::vector<double> &second_b, double second_factor);
+    /// bound_accelerated of a two-equation model: a combination may overshoot below zero where k or
+    /// the second field is small; each keeps at least the positive value it came from, scaled down at
+    /// most tenfold (two_equation::accelerated_decrease); mu_t stays non-negative.
+    void bound_two_equation_fields(std::vector<double> &k, std::vector<double> &second,
+                                   const std::vector<std::vector<double>> &before);
 
     const FvMesh &mesh;
     FluidProperties fluid;
