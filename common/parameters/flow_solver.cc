@@ -23,27 +23,21 @@ namespace servodrift
     prm.declare_entry("Pressure-velocity coupling", "simplec-then-coupled",
                       Patterns::Selection("simplec|coupled|simplec-then-coupled"),
                       "simplec: segregated (momentum, then the pressure correction; the paper's choice). "
-                      "coupled: momentum and continuity (Rhie-Chow fluxes, implicit pressure gradient) as one "
-                      "linear system in u, v and p per outer iteration, solved by UMFPACK LU: the same discrete "
-                      "equations, so the same converged fields, in fewer but much costlier iterations "
-                      "(doc/changes.md, issue 5). simplec-then-coupled: SIMPLEC, and where it stalls "
-                      "(`Stall window') coupled iterations from there, judged on the `Cycle window'; it converges "
-                      "cases whose SIMPLEC is caught in a cycle (doc/method.md, doc/changes.md). [-]");
+                      "coupled: u, v and p as one linear system per outer iteration (UMFPACK LU): the same "
+                      "converged fields in fewer, much costlier iterations. simplec-then-coupled: SIMPLEC, and "
+                      "coupled iterations from where it stalls (`Stall window'), judged on the `Cycle window' "
+                      "(doc/method.md). [-]");
     prm.declare_entry("Momentum solver", "bicgstab-jacobi",
                       Patterns::Selection("bicgstab-jacobi|bicgstab-gauss-seidel|bicgstab-ilu|direct"),
                       "Linear solver of the momentum, k and epsilon equations: BiCGSTAB (Eigen) preconditioned "
-                      "by Jacobi, by a symmetric Gauss-Seidel sweep or by an incomplete LU (ILUT), or UMFPACK LU "
-                      "with its symbolic analysis once per mesh (SuiteSparse; momentum only, k and epsilon then "
-                      "take the Jacobi BiCGSTAB). Gauss-Seidel needs fewer BiCGSTAB iterations per solve than "
-                      "Jacobi, but each costs more; bench/bench_flow compares them (doc/changes.md, issue 4). [-]");
+                      "by Jacobi, a symmetric Gauss-Seidel sweep or an incomplete LU (ILUT), or UMFPACK LU "
+                      "(momentum only; k and epsilon then take the Jacobi BiCGSTAB). bench/bench_flow compares "
+                      "them. [-]");
     prm.declare_entry("Linear solver tolerance", "1e-3", Patterns::Double(1e-12, 0.5),
                       "BiCGSTAB (momentum, k, epsilon) stops when the residual of the correction has fallen by "
-                      "this factor: an outer iteration needs its linearised equations solved only loosely. A "
-                      "looser tolerance saves time per iteration, but more cases stall, laminar cavitating cases "
-                      "can land on another of their steady solutions, and the outer iterations grow, since "
-                      "Anderson acceleration needs the same map from one iteration to the next "
-                      "(doc/changes.md, issue 5). "
-                      "The pressure correction is always solved to round-off, for mass conservation. [1]");
+                      "this factor. Looser saves time per iteration but stalls more cases and slows Anderson "
+                      "acceleration. The pressure correction is always solved to round-off, "
+                      "for mass conservation. [1]");
     prm.declare_entry("Tolerance", "1e-6", Patterns::Double(1e-15, 1),
                       "The run converges when the scaled residuals of both momentum equations and of "
                       "continuity fall below this. [1]");
@@ -56,10 +50,9 @@ namespace servodrift
                       "simplec-then-coupled goes on with coupled iterations. 0: never. [1]");
     prm.declare_entry("Cycle window", "200", Patterns::Integer(0, 10000000),
                       "A run whose largest scaled residual has not fallen by half from one window of this "
-                      "many iterations to the next is caught in a cycle of the segregated coupling (around "
-                      "a cavity, where cells switch between liquid and vapour): its pressure relaxation is "
-                      "lowered by a factor 0.7, down to 0.3, and the run goes on. The converged fields do "
-                      "not depend on the pressure relaxation, only the path does. 0: never. [1]");
+                      "many iterations to the next is caught in a cycle (cells at a cavity's edge switching "
+                      "between liquid and vapour): its pressure relaxation is lowered by 0.7, down to 0.3, "
+                      "which changes the path, not the converged fields. 0: never. [1]");
     prm.declare_entry("Report interval", "0", Patterns::Integer(0, 10000000),
                       "Print the residuals every this many iterations on stderr (0: only at the end). [1]");
     prm.declare_entry("Monitor iterations", "50", Patterns::Integer(1, 100000),
@@ -70,14 +63,11 @@ namespace servodrift
                       "Largest relative change of a monitored result over the monitor iterations. [1]");
     prm.declare_entry("Turbulence model", "laminar",
                       Patterns::Selection("laminar|k-epsilon|k-epsilon-launder-sharma|k-omega-sst"),
-                      "laminar; k-epsilon: the standard model (C_mu 0.09, C1 1.44, C2 1.92, sigma_k 1.0, "
-                      "sigma_eps 1.3) with a two-layer wall treatment (Wolfshtein's one-equation model where "
-                      "the wall-distance Reynolds number sqrt(k) y/nu is below 60, blended as Jongen and Marx), "
-                      "integrated to the wall; k-epsilon-launder-sharma: the same constants with the "
-                      "Launder-Sharma damping functions everywhere (it relaminarises free shear layers); "
-                      "k-omega-sst: Menter's shear-stress transport model in its 2003 form (production "
-                      "limiter, omega resolved to the wall; doc/method.md). All need a first cell at y+ of "
-                      "order 1. Where a stage chooses per case, its own entry overrides this. [-]");
+                      "laminar; k-epsilon: the standard model with a two-layer wall treatment (Wolfshtein's "
+                      "one-equation model near the wall); k-epsilon-launder-sharma: the Launder-Sharma "
+                      "low-Reynolds model; k-omega-sst: Menter's SST (2003). All are integrated to the wall "
+                      "(first cell at y+ of order 1); constants and references in doc/method.md. Where a "
+                      "stage chooses per case, its own entry overrides this. [-]");
     prm.declare_entry("Turbulence relaxation", "0.9", Patterns::Double(0.01, 1),
                       "Under-relaxation of the k and epsilon equations. [1]");
     prm.declare_entry("Turbulent viscosity relaxation", "0.5", Patterns::Double(0.01, 1),

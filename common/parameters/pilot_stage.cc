@@ -47,20 +47,16 @@ namespace servodrift
                       "start-up on the fine mesh itself. [-]");
     prm.declare_entry("Field continuation ratio", "3", Patterns::Double(1.1, 1e6),
                       "Field level: largest ratio of successive pressure levels on a case's solution "
-                      "path (from its start-up or the last converged case to its own pressure "
-                      "difference; larger steps go through geometric intermediate levels). Laminar "
-                      "cavitating nozzle cases have more than one steady solution, and too large a step "
-                      "from the start-up can land on a cavity that chokes the curtain, below the "
-                      "quasi-static C_dn; small enough steps follow the quasi-static branch "
+                      "path (from its start-up or the last converged case; larger steps go through "
+                      "geometric intermediate levels). Laminar cavitating nozzle cases have more than one "
+                      "steady solution; small enough steps follow the quasi-static branch "
                       "(doc/validation.md). [1]");
     prm.declare_entry("Field turbulent viscosity limit", "0.1", Patterns::Double(1e-6, 1e6),
-                      "Field level, k-epsilon: the largest turbulent viscosity on a case's solution path, "
-                      "mu_t/mu as a multiple of the case's ideal-velocity Reynolds number (E17 for the "
-                      "orifice, 2 h sqrt(2 dp/rho)/nu for the nozzle). A round jet's mu_t/mu is about "
-                      "0.015 Re (Pope 2000, 5.1). It bounds transients only: a case that converges with "
-                      "mu_t at the limit in any cell is flagged as not converged. Without it, a transient "
-                      "cavity can drive the model's mu_t orders of magnitude above its converged value "
-                      "and stall the case (doc/changes.md, issue 5). [1]");
+                      "Field level, turbulence models: the largest mu_t/mu on a case's solution path, as a "
+                      "multiple of its ideal-velocity Reynolds number (E17 for the orifice, 2 h sqrt(2 "
+                      "dp/rho)/nu for the nozzle; a round jet's is about 0.015 Re, Pope 2000). It bounds "
+                      "transients of a cavity only: a case that converges with mu_t at the limit anywhere is "
+                      "flagged as not converged. [1]");
     prm.declare_entry("Field plenum size", "6", Patterns::Double(2, 100),
                       "Field level: radius and length of the fixed orifice's upstream plenum, in bore "
                       "radii D_0/2. [1]");
@@ -77,7 +73,7 @@ namespace servodrift
                       "pressure below `Fluid/Vapour pressure'; a cell that would go below holds it and its "
                       "liquid fraction carries the mass). Without it (single-phase, D11 as printed) the "
                       "suction ring at the land's inner edge falls far below zero absolute at RV-1's "
-                      "pressures (C12) and the flapper force and C_dn follow that unphysical suction. [-]");
+                      "pressures (C12). [-]");
     const char *models = "automatic|laminar|k-epsilon|k-epsilon-launder-sharma|k-omega-sst";
     prm.declare_entry("Fixed orifice flow model", "automatic", Patterns::Selection(models),
                       "Field level: flow model of the fixed-orifice cases (D11): laminar, k-epsilon (the "
@@ -101,21 +97,17 @@ namespace servodrift
                       "sqrt(2 dp/rho)/nu from which the nozzle-flapper case runs k-epsilon. [1]");
     prm.declare_entry("Nozzle stall window", "250", Patterns::Integer(0, 10000000),
                       "Field level: `Flow solver/Stall window' for the nozzle-flapper cases (the fixed "
-                      "orifice keeps the Flow solver's). Their SIMPLEC stalls are flat plateaus (cells at a "
-                      "cavity's edge flickering between liquid and vapour) that the coupled iterations, "
-                      "cheap on the nozzle's small mesh, converge quickly; a shorter window switches to "
-                      "them sooner, with the same answer. On the orifice a window this short makes the "
-                      "sweep slower (doc/changes.md, issue 5). 0: never. [1]");
+                      "orifice keeps the Flow solver's). Their SIMPLEC stalls (a cavity's edge flickering) "
+                      "are converged quickly by coupled iterations on the nozzle's small mesh, so a shorter "
+                      "window switches sooner, with the same answer. 0: never. [1]");
     prm.declare_entry("Model-form alternatives", "",
                       Patterns::List(Patterns::Selection("laminar|k-epsilon|k-epsilon-launder-sharma|k-omega-sst"), 0, 3),
-                      "Field level: other flow models whose fixed_orifice and nozzle_flapper tables the flow "
-                      "stage also computes at every table point (tables/<table>.<model>.csv, "
-                      "flow/<geometry>_cases.<model>.csv), so that the system stage reports the spread of "
-                      "C_dn, the flapper force and K_f between them and the default as the model-form "
-                      "uncertainty (system/model_form_spread.csv, a band in the report). laminar: laminar "
-                      "below each geometry's transition Reynolds number, where it is plausible, the default "
-                      "model above; the others for every case of both geometries. Each costs about one more "
-                      "flow stage. Empty: none. [-]");
+                      "Field level: other flow models whose pilot tables the flow stage also computes "
+                      "(tables/<table>.<model>.csv); the system stage reports the spread of C_dn, the "
+                      "flapper force and K_f between them and the default as the model-form uncertainty "
+                      "(system/model_form_spread.csv, a band in the report). laminar: only where the "
+                      "transition Reynolds number says it is plausible. Each costs about a flow stage. "
+                      "Empty: none. [-]");
     prm.declare_entry("Fixed orifice law", "lichtarowicz", Patterns::Selection("lichtarowicz|paper-fit"),
                       "Reduced-order fixed-orifice discharge coefficient: lichtarowicz (E21, RV-1) or "
                       "paper-fit (the paper's cubic E26 in Re_0, clamped to its window Re_0 in "
