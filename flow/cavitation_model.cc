@@ -35,15 +35,22 @@ namespace servodrift::flow
   }
 
   /// Upwind: gamma~_P sum(out) F = sum(in) gamma~_upwind |F| with gamma~ the mixture ratio, in
-  /// Gauss-Seidel sweeps; then gamma = (gamma~ - r)/(1 - r), at least 0.
-  void CavitationModel::update_liquid_fraction(const std::vector<double> &flux)
+  /// Gauss-Seidel sweeps; then gamma = (gamma~ - r)/(1 - r), at least 0. With a time step, the
+  /// storage S = rho V/dt joins both sides: gamma~_P (sum(out) F + S) = sum(in) ... + S gamma~_old.
+  void CavitationModel::update_liquid_fraction(const std::vector<double> &flux, const TimeLevel *time, double density)
   {
+    const bool transient = time && time->dt > 0;
     for (int sweep = 0; sweep < liquid_fraction_sweeps; ++sweep)
       for (std::size_t c = 0; c < mesh.n_cells(); ++c)
         {
           if (!cavitating[c])
             continue;
           double in = 0, out = 0;
+          if (transient)
+            {
+              const double storage = density * mesh.cell_volume[c] / time->dt;
+              in += storage * time->mixture[c], out += storage;
+            }
           for (unsigned int f : mesh.cell_faces[c])
             {
               const double F = mesh.owner[f] == c ? flux[f] : -flux[f]; // out of c

@@ -5,6 +5,7 @@
 // ratio, carries the mass. A face carries the mixture density of its upwind cell (an inflow from a
 // boundary is liquid), so the mixture's mass flux through a face is m F with F = rho u.S the flux at
 // the liquid's density and m = gamma + (1 - gamma) r of the upwind cell.
+#include "flow/flow_state.h"
 #include "flow/fv_mesh.h"
 
 #include <vector>
@@ -43,8 +44,9 @@ namespace servodrift::flow
     const std::vector<double> &convecting_flux(const std::vector<double> &flux) const { return on ? mixture_flux : flux; }
 
     /// The liquid fraction of the cavitating cells from their mixture mass balance with the new
-    /// fluxes; a cell whose inflow would need gamma >= 1 is liquid again.
-    void update_liquid_fraction(const std::vector<double> &flux);
+    /// fluxes; a cell whose inflow would need gamma >= 1 is liquid again. With a time step (`time'
+    /// set) the balance holds the change of the cell's mass as well, rho V (m - m_old)/dt.
+    void update_liquid_fraction(const std::vector<double> &flux, const TimeLevel *time = nullptr, double density = 0);
     /// A cell's new pressure: a cavitating cell holds p_cav, and a liquid one that would be stretched
     /// below it cavitates.
     void set_cell_pressure(std::vector<double> &p, std::size_t cell, double pressure)

@@ -36,6 +36,15 @@ namespace servodrift::flow
     std::vector<char> cavitating;
   };
 
+  /// Implicit (backward) Euler in time (SimplecSolver::advance): the time step and the fields of the
+  /// last time level. dt = 0: steady.
+  struct TimeLevel
+  {
+    double dt = 0;                 ///< [s]
+    std::vector<double> u, v;      ///< cell velocities at the last time level [m/s]
+    std::vector<double> mixture;   ///< mixture density over the liquid's per cell at the last time level [1]
+  };
+
   /// The solver's own state at one iteration.
   struct FlowState
   {

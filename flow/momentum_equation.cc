@@ -33,7 +33,7 @@ namespace servodrift::flow
 
   MomentumEquation::Residuals MomentumEquation::assemble(const FlowState &s, const BoundaryConditions &boundaries,
                                                          const TurbulenceModel &turbulence,
-                                                         const std::vector<double> &convecting_flux)
+                                                         const std::vector<double> &convecting_flux, const TimeTerm *time)
   {
     // the transpose part of the turbulent stress needs both velocity gradients
     std::vector<Vector2> grad_u, grad_v;
@@ -41,8 +41,8 @@ namespace servodrift::flow
       grad_u = mesh.gradient(s.u, s.u_b), grad_v = mesh.gradient(s.v, s.v_b);
     Residuals r{};
     double scale_v = 0;
-    r.u = assemble_component(0, s, boundaries, turbulence, convecting_flux, grad_u, grad_v, r.scale);
-    r.v = assemble_component(1, s, boundaries, turbulence, convecting_flux, grad_u, grad_v, scale_v);
+    r.u = assemble_component(0, s, boundaries, turbulence, convecting_flux, grad_u, grad_v, time, r.scale);
+    r.v = assemble_component(1, s, boundaries, turbulence, convecting_flux, grad_u, grad_v, time, scale_v);
     return r;
   }
 
@@ -50,7 +50,7 @@ namespace servodrift::flow
                                               const TurbulenceModel &turbulence,
                                               const std::vector<double> &convecting_flux,
                                               const std::vector<Vector2> &grad_u, const std::vector<Vector2> &grad_v,
-                                              double &scale)
+                                              const TimeTerm *time, double &scale)
   {
     const std::size_t n = mesh.n_cells();
     const double mu = fluid.viscosity;
@@ -82,6 +82,8 @@ namespace servodrift::flow
       {
         const double V = mesh.cell_volume[c];
         eq.b[c] -= s.grad_p[c][i] * V; // -grad p, explicit
+        if (time)
+          eq.diagonal[c] += time->diagonal[c], eq.b[c] += time->source[i][c];
         if (i == 1 && mesh.geometry == Geometry::axisymmetric)
           {
             // hoop: -mu v/r^2 of the Laplacian form; -2 mu_t v/r^2 for the turbulent stress, whose

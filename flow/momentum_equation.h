@@ -1,8 +1,9 @@
 #pragma once
 // The momentum equations (OpenFOAM's UEqn.H; doc/method.md, "Flow core"): for each component of u,
-//   div(F u) - div(mu_eff grad u) = -grad p [+ div(mu_t (grad u)^T)] [- (mu + 2 mu_t) v/r^2 (radial)]
+//   [d(rho_m u)/dt +] div(F u) - div(mu_eff grad u) = -grad p [+ div(mu_t (grad u)^T)] [- (mu + 2 mu_t) v/r^2 (radial)]
 // assembled on the convecting fluxes F and the face viscosities of the turbulence model, the
-// pressure gradient explicit, relaxed by alpha_u. From the x equation the coefficients of the
+// pressure gradient explicit, relaxed by alpha_u; with a time step the implicit Euler term
+// rho_m V (u - u_old)/dt, rho_m the mixture's density (SimplecSolver::advance). From the x equation the coefficients of the
 // pressure-velocity coupling: D = V/a_P (Rhie-Chow) and SIMPLEC's D~ = V/(a_P - sum a_nb).
 #include "flow/fv_matrix.h"
 #include "flow/turbulence_model.h"
@@ -26,9 +27,16 @@ namespace servodrift::flow
     {
       double u, v, scale;
     };
-    /// Assembles both components (then relaxed) and D, D~.
+    /// The implicit Euler term per cell: rho_m V/dt on the diagonal, rho_m,old V/dt u_old (x, y) on
+    /// the right-hand side [kg/s per radian if axisymmetric; times m/s].
+    struct TimeTerm
+    {
+      std::vector<double> diagonal;
+      std::array<std::vector<double>, 2> source;
+    };
+    /// Assembles both components (then relaxed) and D, D~; `time' null: steady.
     Residuals assemble(const FlowState &state, const BoundaryConditions &boundaries, const TurbulenceModel &turbulence,
-                       const std::vector<double> &convecting_flux);
+                       const std::vector<double> &convecting_flux, const TimeTerm *time = nullptr);
     /// The predicted velocities: u and v of `state' from the relaxed equations. With the direct
     /// solver, `first_iteration' of a solve renews UMFPACK's symbolic analysis (its strategy reads the
     /// values as well as the pattern).
@@ -42,7 +50,8 @@ namespace servodrift::flow
   private:
     double assemble_component(int i, const FlowState &state, const BoundaryConditions &boundaries,
                               const TurbulenceModel &turbulence, const std::vector<double> &convecting_flux,
-                              const std::vector<Vector2> &grad_u, const std::vector<Vector2> &grad_v, double &scale);
+                              const std::vector<Vector2> &grad_u, const std::vector<Vector2> &grad_v, const TimeTerm *time,
+                              double &scale);
 
     const FvMesh &mesh;
     FluidProperties fluid;

@@ -59,8 +59,8 @@ namespace servodrift::flow
   {
     update_boundary_values();
     mesh.gradient(state.p, state.p_b, state.grad_p);
-    const MomentumEquation::Residuals m =
-      momentum.assemble(state, boundaries, *turbulence, cavitation.convecting_flux(state.flux));
+    const MomentumEquation::Residuals m = momentum.assemble(state, boundaries, *turbulence, cavitation.convecting_flux(state.flux),
+                                                            previous.dt > 0 ? &update_time_term() : nullptr);
     double imbalance = 0, throughput = 0;
     if (control.coupled())
       imbalance = coupled.solve(state, momentum, boundaries, cavitation, control.coupled_pressure_relaxation(), throughput);
@@ -76,7 +76,7 @@ namespace servodrift::flow
     // the models after the new fluxes: cavitation, the pressure boundaries' inflow, turbulence
     if (cavitation.enabled())
       {
-        cavitation.update_liquid_fraction(state.flux);
+        cavitation.update_liquid_fraction(state.flux, &previous, fluid.density);
         cavitation.update_mixture_flux(state.flux);
       }
     boundaries.update_inflow_speeds(state.flux);

@@ -104,6 +104,16 @@ namespace servodrift::flow
     SolveReport solve_to(double tolerance, bool consult_monitor);
     std::string failure_output;
 
+    /// Time stepping, laminar (time_stepping.cc): one implicit Euler step of dt [s] from the current
+    /// fields, SIMPLEC iterations until the scaled residuals fall below `tolerance' or
+    /// `max_iterations' (a step may end before its tolerance: the report's residuals say where).
+    /// Throws std::invalid_argument with a turbulence model or dt <= 0, std::runtime_error at a
+    /// divergence.
+    SolveReport advance(double dt, unsigned int max_iterations, double tolerance);
+    /// The time step at which the largest cell Courant number of the current fluxes, half the sum
+    /// of |F| over a cell's faces over its mass, dt sum|F|/(2 rho_m V), is `courant' [s].
+    double courant_time_step(double courant) const;
+
     const std::vector<double> &velocity_x() const;
     const std::vector<double> &velocity_y() const;
     const std::vector<double> &pressure() const;

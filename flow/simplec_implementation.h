@@ -21,8 +21,11 @@ namespace servodrift::flow
     Implementation(const FvMesh &mesh, const FluidProperties &fluid,
                    const std::map<std::string, BoundaryCondition> &boundaries, const FlowSolverParameters &settings);
 
-    /// One outer iteration, SIMPLEC or coupled as the control says; its scaled residuals.
+    /// One outer iteration, SIMPLEC or coupled as the control says (with the time term while a time
+    /// step is on, `previous'); its scaled residuals.
     Residuals iterate(const IterationControl &control);
+    /// The momentum equations' implicit Euler term of the current mixture and the last time level.
+    const MomentumEquation::TimeTerm &update_time_term();
     /// The boundary face values of the state (walls' pressure at least the vapour pressure).
     void update_boundary_values() { boundaries.update_values(state, cavitation.pressure_floor()); }
     /// The mass that crosses each face: the mixture's with cavitation.
@@ -48,6 +51,8 @@ namespace servodrift::flow
     CavitationModel cavitation;
     std::unique_ptr<TurbulenceModel> turbulence;
     ConvergenceMonitor monitor;
+    TimeLevel previous;                   ///< the last time level while SimplecSolver::advance runs (dt 0: steady)
+    MomentumEquation::TimeTerm time_term; ///< of `previous' and the current mixture
     std::vector<double> field_scales; ///< of the accelerated fields (empty: set at the next pack)
   };
 } // namespace servodrift::flow

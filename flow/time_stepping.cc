@@ -1,0 +1,106 @@
+// SimplecSolver: time stepping (implicit Euler) for flows without a steady solution, whose time
+// average then stands for them (doc/method.md, "Time stepping"). Each step is the steady iteration
+// with the time term rho_m V (u - u_old)/dt in the momentum equations (momentum_equation.h) and the
+// change of a cavitating cell's mass in its liquid-fraction balance (cavitation_model.h); the
+// pressure correction is unchanged (the liquid is incompressible, a cavitating cell holds p_cav).
+// The Rhie-Chow face fluxes carry no time-step correction (Choi 1999), so a converged transient
+// depends slightly on dt through the fluxes' pressure smoothing; the verification measures the
+// whole (tests/verification/flow_time_stepping_test.cc).
+#include "flow/simplec_implementation.h"
+
+#include "common/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace servodrift::flow
+{
+  const MomentumEquation::TimeTerm &SimplecSolver::Implementation::update_time_term()
+  {
+    const std::size_t n = mesh.n_cells();
+    time_term.diagonal.resize(n);
+    for (auto &source : time_term.source)
+      source.resize(n);
+    for (std::size_t c = 0; c < n; ++c)
+      {
+        const double per_step = fluid.density * mesh.cell_volume[c] / previous.dt;
+        time_term.diagonal[c] = per_step * cavitation.mixture_ratio(c);
+        time_term.source[0][c] = per_step * previous.mixture[c] * previous.u[c];
+        time_term.source[1][c] = per_step * previous.mixture[c] * previous.v[c];
+      }
+    return time_term;
+  }
+
+  SolveReport SimplecSolver::advance(double dt, unsigned int max_iterations, double tolerance)
+  {
+    auto &d = *impl;
+    if (d.turbulence->turbulent())
+      throw std::invalid_argument("flow: " + d.mesh.source + ": time stepping is laminar only");
+    if (!(dt > 0) || !std::isfinite(dt) || max_iterations == 0)
+      throw std::invalid_argument("flow: time step " + format_number(dt) + " s must be > 0, with at least one iteration");
+    const std::size_t n = d.mesh.n_cells();
+    d.previous.dt = dt;
+    d.previous.u = d.state.u, d.previous.v = d.state.v;
+    d.previous.mixture.resize(n);
+    for (std::size_t c = 0; c < n; ++c)
+      d.previous.mixture[c] = d.cavitation.mixture_ratio(c);
+    // the steady iteration's tests for a cycle, a stall and acceleration belong to a fixed point,
+    // not to a time step: its iterations only converge the step's implicit equations
+    FlowSolverParameters inner = d.settings;
+    inner.coupling = FlowSolverParameters::Coupling::simplec;
+    inner.acceleration_depth = 0;
+    inner.cycle_window = inner.stall_window = 0;
+    inner.max_iterations = max_iterations;
+    IterationControl control(inner, tolerance, nullptr, false);
+    Residuals r;
+    for (bool done = false; !done;)
+      {
+        const unsigned int it = control.next();
+        try
+          {
+            r = d.iterate(control);
+          }
+        catch (const std::runtime_error &e)
+          {
+            d.previous.dt = 0;
+            throw std::runtime_error("flow: " + d.mesh.source + ": the time step diverged at iteration " +
+                                     std::to_string(it) + " (" + e.what() + ")");
+          }
+        switch (control.judge(r, d))
+          {
+            case IterationControl::Verdict::go_on: break;
+            case IterationControl::Verdict::diverged:
+              d.previous.dt = 0;
+              throw std::runtime_error("flow: " + d.mesh.source + ": time step: " + control.reason());
+            default: done = true; // converged, or the step's iterations used up
+          }
+      }
+    d.previous.dt = 0; // steady again unless the next step is called
+    d.update_boundary_values();
+    d.state.grad_p = d.mesh.gradient(d.state.p, d.state.p_b);
+    d.update_boundary_values();
+    SolveReport report;
+    report.iterations = control.iteration();
+    report.residuals = r;
+    report.pressure_relaxation = control.pressure_relaxation();
+    return report;
+  }
+
+  double SimplecSolver::courant_time_step(double courant) const
+  {
+    const auto &d = *impl;
+    const std::vector<double> &F = d.mass_flux();
+    double rate = 0; // the largest sum|F|/(2 rho_m V) [1/s]
+    for (std::size_t c = 0; c < d.mesh.n_cells(); ++c)
+      {
+        double sum = 0;
+        for (unsigned int f : d.mesh.cell_faces[c])
+          sum += std::abs(F[f]);
+        rate = std::max(rate, sum / (2 * d.fluid.density * d.cavitation.mixture_ratio(c) * d.mesh.cell_volume[c]));
+      }
+    if (!(rate > 0))
+      throw std::invalid_argument("flow: " + d.mesh.source + ": no flow to set a time step by");
+    return courant / rate;
+  }
+} // namespace servodrift::flow
