@@ -156,14 +156,19 @@ namespace servodrift::flow
             case IterationControl::Verdict::go_on: break;
           }
       }
-    d.update_boundary_values();
-    d.state.grad_p = d.mesh.gradient(d.state.p, d.state.p_b);
-    d.update_boundary_values();
+    return d.finish(control, r);
+  }
+
+  SolveReport SimplecSolver::Implementation::finish(const IterationControl &control, const Residuals &r)
+  {
+    update_boundary_values();
+    state.grad_p = mesh.gradient(state.p, state.p_b);
+    update_boundary_values();
     SolveReport report;
     report.iterations = control.iteration();
     report.residuals = r;
     report.pressure_relaxation = control.pressure_relaxation();
-    report.cells_at_viscosity_limit = d.turbulence->turbulent() ? d.turbulence->cells_at_viscosity_limit() : 0;
+    report.cells_at_viscosity_limit = turbulence->turbulent() ? turbulence->cells_at_viscosity_limit() : 0;
     return report;
   }
 

@@ -24,6 +24,9 @@ namespace servodrift::flow
     /// One outer iteration, SIMPLEC or coupled as the control says (with the time term while a time
     /// step is on, `previous'); its scaled residuals.
     Residuals iterate(const IterationControl &control);
+    /// The end of a solve or a time step: the boundary values and the pressure gradient of the final
+    /// fields, and the report.
+    SolveReport finish(const IterationControl &control, const Residuals &r);
     /// The momentum equations' implicit Euler term of the current mixture and the last time level.
     const MomentumEquation::TimeTerm &update_time_term();
     /// The boundary face values of the state (walls' pressure at least the vapour pressure).

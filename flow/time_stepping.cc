@@ -77,14 +77,7 @@ namespace servodrift::flow
           }
       }
     d.previous.dt = 0; // steady again unless the next step is called
-    d.update_boundary_values();
-    d.state.grad_p = d.mesh.gradient(d.state.p, d.state.p_b);
-    d.update_boundary_values();
-    SolveReport report;
-    report.iterations = control.iteration();
-    report.residuals = r;
-    report.pressure_relaxation = control.pressure_relaxation();
-    return report;
+    return d.finish(control, r);
   }
 
   double SimplecSolver::courant_time_step(double courant) const
