@@ -36,7 +36,8 @@ namespace servodrift::flow
 
   /// Upwind: gamma~_P sum(out) F = sum(in) gamma~_upwind |F| with gamma~ the mixture ratio, in
   /// Gauss-Seidel sweeps; then gamma = (gamma~ - r)/(1 - r), at least 0. With a time step, the
-  /// storage S = rho V/dt joins both sides: gamma~_P (sum(out) F + S) = sum(in) ... + S gamma~_old.
+  /// storage S = rho V/dt joins both sides (flow_state.h's weights: implicit Euler or BDF2):
+  /// gamma~_P (sum(out) F + w_new S) = sum(in) ... + S sum(w_old gamma~_old).
   void CavitationModel::update_liquid_fraction(const std::vector<double> &flux, const TimeLevel *time, double density)
   {
     const bool transient = time && time->dt > 0;
@@ -49,7 +50,7 @@ namespace servodrift::flow
           if (transient)
             {
               const double storage = density * mesh.cell_volume[c] / time->dt;
-              in += storage * time->mixture[c], out += storage;
+              in += storage * time->old_mass(c), out += storage * time->new_weight();
             }
           for (unsigned int f : mesh.cell_faces[c])
             {

@@ -45,7 +45,7 @@ namespace servodrift::flow
 
     /// The liquid fraction of the cavitating cells from their mixture mass balance with the new
     /// fluxes; a cell whose inflow would need gamma >= 1 is liquid again. With a time step (`time'
-    /// set) the balance holds the change of the cell's mass as well, rho V (m - m_old)/dt.
+    /// set) the balance holds the change of the cell's mass as well, rho V dm/dt.
     void update_liquid_fraction(const std::vector<double> &flux, const TimeLevel *time = nullptr, double density = 0);
     /// A cell's new pressure: a cavitating cell holds p_cav, and a liquid one that would be stretched
     /// below it cavitates.

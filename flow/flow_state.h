@@ -36,13 +36,37 @@ namespace servodrift::flow
     std::vector<char> cavitating;
   };
 
-  /// Implicit (backward) Euler in time (SimplecSolver::advance): the time step and the fields of the
-  /// last time level. dt = 0: steady.
+  /// The fields of one time level: cell velocities [m/s] and the mixture density over the liquid's [1].
+  struct TimeLevelFields
+  {
+    std::vector<double> u, v, mixture;
+  };
+
+  /// The time derivative of SimplecSolver::advance, second-order backward differences (BDF2; the
+  /// first step after a start, or after dt changed, implicit Euler): d(m phi)/dt at the new level is
+  /// (new_weight m phi - sum of the old levels' weighted m phi)/dt.
   struct TimeLevel
   {
-    double dt = 0;                 ///< [s]
-    std::vector<double> u, v;      ///< cell velocities at the last time level [m/s]
-    std::vector<double> mixture;   ///< mixture density over the liquid's per cell at the last time level [1]
+    double dt = 0;            ///< [s]; 0: steady
+    TimeLevelFields last;     ///< level n
+    TimeLevelFields before;   ///< level n - 1 (empty: implicit Euler)
+    /// BDF2: 3/2, 2, -1/2; implicit Euler: 1, 1, 0
+    double new_weight() const { return before.u.empty() ? 1.0 : 1.5; }
+    double last_weight() const { return before.u.empty() ? 1.0 : 2.0; }
+    double before_weight() const { return before.u.empty() ? 0.0 : -0.5; }
+    /// sum over the old levels of weight x m x (phi: 1 for the mass balance)
+    double old_mass(std::size_t c) const
+    {
+      return last_weight() * last.mixture[c] + (before.u.empty() ? 0.0 : before_weight() * before.mixture[c]);
+    }
+    double old_momentum(int component, std::size_t c) const
+    {
+      const auto &now = component == 0 ? last.u : last.v;
+      double sum = last_weight() * last.mixture[c] * now[c];
+      if (!before.u.empty())
+        sum += before_weight() * before.mixture[c] * (component == 0 ? before.u : before.v)[c];
+      return sum;
+    }
   };
 
   /// The solver's own state at one iteration.

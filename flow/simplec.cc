@@ -131,6 +131,7 @@ namespace servodrift::flow
   SolveReport SimplecSolver::solve_to(double tolerance, bool consult_monitor)
   {
     auto &d = *impl;
+    d.forget_time_levels();
     IterationControl control(d.settings, tolerance, consult_monitor ? &d.monitor : nullptr, d.turbulence->turbulent());
     Residuals r;
     for (bool converged = false; !converged;)

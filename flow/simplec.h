@@ -104,8 +104,9 @@ namespace servodrift::flow
     SolveReport solve_to(double tolerance, bool consult_monitor);
     std::string failure_output;
 
-    /// Time stepping, laminar (time_stepping.cc): one implicit Euler step of dt [s] from the current
-    /// fields, SIMPLEC iterations until the scaled residuals fall below `tolerance' or
+    /// Time stepping, laminar (time_stepping.cc): one step of dt [s] from the current fields, second-
+    /// order backward differences (BDF2) after a first implicit Euler step at the same dt (any other
+    /// change of the fields in between starts again with implicit Euler); SIMPLEC iterations until the scaled residuals fall below `tolerance' or
     /// `max_iterations' (a step may end before its tolerance: the report's residuals say where).
     /// Throws std::invalid_argument with a turbulence model or dt <= 0, std::runtime_error at a
     /// divergence.

@@ -54,7 +54,10 @@ namespace servodrift::flow
     CavitationModel cavitation;
     std::unique_ptr<TurbulenceModel> turbulence;
     ConvergenceMonitor monitor;
-    TimeLevel previous;                   ///< the last time level while SimplecSolver::advance runs (dt 0: steady)
+    TimeLevel previous;                   ///< the old time levels while SimplecSolver::advance runs (dt 0: steady)
+    double time_step = 0;                 ///< of the last step (BDF2 needs the same dt)
+    /// A change of the state other than a time step: the next step starts with implicit Euler.
+    void forget_time_levels() { previous = {}, time_step = 0; }
     MomentumEquation::TimeTerm time_term; ///< of `previous' and the current mixture
     std::vector<double> field_scales; ///< of the accelerated fields (empty: set at the next pack)
   };

@@ -15,6 +15,7 @@ namespace servodrift::flow
     if (!(s > 0) || !std::isfinite(s))
       throw std::invalid_argument("flow: pressure scaling " + format_number(s) + " must be > 0");
     auto &d = *impl;
+    d.forget_time_levels();
     FlowState &state = d.state;
     const double root = std::sqrt(s);
     auto scale = [](std::vector<double> &x, double factor) {
@@ -48,6 +49,7 @@ namespace servodrift::flow
   void SimplecSolver::set_fields(const FlowFields &o)
   {
     auto &d = *impl;
+    d.forget_time_levels();
     const FvMesh &mesh = d.mesh;
     FlowState &s = d.state;
     const bool with_fluxes = !o.flux.empty();

@@ -1,6 +1,6 @@
-// SimplecSolver: time stepping (implicit Euler) for flows without a steady solution, whose time
+// SimplecSolver: time stepping (BDF2, its first step implicit Euler) for flows without a steady solution, whose time
 // average then stands for them (doc/method.md, "Time stepping"). Each step is the steady iteration
-// with the time term rho_m V (u - u_old)/dt in the momentum equations (momentum_equation.h) and the
+// with the time term d(rho_m u)/dt V in the momentum equations (momentum_equation.h) and the
 // change of a cavitating cell's mass in its liquid-fraction balance (cavitation_model.h); the
 // pressure correction is unchanged (the liquid is incompressible, a cavitating cell holds p_cav).
 // The Rhie-Chow face fluxes carry no time-step correction (Choi 1999), so a converged transient
@@ -25,9 +25,9 @@ namespace servodrift::flow
     for (std::size_t c = 0; c < n; ++c)
       {
         const double per_step = fluid.density * mesh.cell_volume[c] / previous.dt;
-        time_term.diagonal[c] = per_step * cavitation.mixture_ratio(c);
-        time_term.source[0][c] = per_step * previous.mixture[c] * previous.u[c];
-        time_term.source[1][c] = per_step * previous.mixture[c] * previous.v[c];
+        time_term.diagonal[c] = per_step * previous.new_weight() * cavitation.mixture_ratio(c);
+        time_term.source[0][c] = per_step * previous.old_momentum(0, c);
+        time_term.source[1][c] = per_step * previous.old_momentum(1, c);
       }
     return time_term;
   }
@@ -39,12 +39,17 @@ namespace servodrift::flow
       throw std::invalid_argument("flow: " + d.mesh.source + ": time stepping is laminar only");
     if (!(dt > 0) || !std::isfinite(dt) || max_iterations == 0)
       throw std::invalid_argument("flow: time step " + format_number(dt) + " s must be > 0, with at least one iteration");
-    const std::size_t n = d.mesh.n_cells();
-    d.previous.dt = dt;
-    d.previous.u = d.state.u, d.previous.v = d.state.v;
-    d.previous.mixture.resize(n);
-    for (std::size_t c = 0; c < n; ++c)
-      d.previous.mixture[c] = d.cavitation.mixture_ratio(c);
+    // BDF2 from the second step of a run at constant dt (the fields unchanged in between: every
+    // other change of the state forgets the levels), implicit Euler otherwise
+    if (dt == d.time_step && !d.previous.last.u.empty())
+      d.previous.before = std::move(d.previous.last);
+    else
+      d.previous.before = {};
+    d.previous.dt = d.time_step = dt;
+    d.previous.last.u = d.state.u, d.previous.last.v = d.state.v;
+    d.previous.last.mixture.resize(d.mesh.n_cells());
+    for (std::size_t c = 0; c < d.mesh.n_cells(); ++c)
+      d.previous.last.mixture[c] = d.cavitation.mixture_ratio(c);
     // the steady iteration's tests for a cycle, a stall and acceleration belong to a fixed point,
     // not to a time step: its iterations only converge the step's implicit equations
     FlowSolverParameters inner = d.settings;
@@ -63,7 +68,7 @@ namespace servodrift::flow
           }
         catch (const std::runtime_error &e)
           {
-            d.previous.dt = 0;
+            d.forget_time_levels();
             throw std::runtime_error("flow: " + d.mesh.source + ": the time step diverged at iteration " +
                                      std::to_string(it) + " (" + e.what() + ")");
           }
@@ -71,7 +76,7 @@ namespace servodrift::flow
           {
             case IterationControl::Verdict::go_on: break;
             case IterationControl::Verdict::diverged:
-              d.previous.dt = 0;
+              d.forget_time_levels();
               throw std::runtime_error("flow: " + d.mesh.source + ": time step: " + control.reason());
             default: done = true; // converged, or the step's iterations used up
           }
