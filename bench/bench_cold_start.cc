@@ -116,6 +116,11 @@ int main(int argc, char **argv)
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (r[flag] == flags::not_converged)
         std::printf("FAILED (flag 2) after %.1f s\n", seconds);
+      else if (r[flag] == flags::time_averaged)
+        std::printf("no steady solution: time average (flag 5) over %.3g s, %.0f iterations, %.1f s, C_d %.5f +- %.5f, "
+                    "F %.5f +- %.5f N (standard deviations)\n",
+                    r[averaged_time], r[iterations], seconds, r[discharge_coefficient], r[discharge_coefficient_spread],
+                    r[flapper_force], r[flapper_force_spread]);
       else
         std::printf("converged, %.0f iterations, %.1f s, C_d %.5f, F %.5f N\n", r[iterations], seconds,
                     r[discharge_coefficient], r[flapper_force]);

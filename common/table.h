@@ -56,6 +56,8 @@ namespace servodrift
     constexpr double beyond_verified = 4; ///< a field value outside the range where the field level was
                                           ///< verified: it differs from the reduced-order value by more
                                           ///< than the stage's stated factor (flow/pilot_field_stage.cc)
+    constexpr double time_averaged = 5;   ///< no steady solution: the time average of a time-accurate run
+                                          ///< (its spread in flow/<geometry>_time_averages.csv)
   } // namespace flags
 
   class Table

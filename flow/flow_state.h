@@ -36,10 +36,11 @@ namespace servodrift::flow
     std::vector<char> cavitating;
   };
 
-  /// The fields of one time level: cell velocities [m/s] and the mixture density over the liquid's [1].
+  /// The fields of one time level: cell velocities [m/s], the mixture density over the liquid's [1]
+  /// and the face fluxes F (FlowState::flux).
   struct TimeLevelFields
   {
-    std::vector<double> u, v, mixture;
+    std::vector<double> u, v, mixture, flux;
   };
 
   /// The time derivative of SimplecSolver::advance, second-order backward differences (BDF2; the

@@ -190,6 +190,15 @@ namespace servodrift::flow
     /// (an intermediate level only to `intermediate_tolerance' if that is > 0).
     SolveReport solve_at(double dp, double intermediate_tolerance = 0)
     {
+      prepare_level(dp);
+      return intermediate_tolerance > 0 ? solver.solve_to(std::max(intermediate_tolerance, valve.flow_solver.tolerance), false) :
+                                          solver.solve();
+    }
+
+    /// The fields scaled to the pressure level dp (from the inlet pressure they were solved at), the
+    /// inlet's pressure, the turbulent viscosity's limit and the vapour pressure at that level.
+    void prepare_level(double dp)
+    {
       const double previous = solver.boundary_pressure("inlet");
       if (previous > 0 && previous != dp)
         solver.scale_pressure_level(dp / previous);
@@ -198,9 +207,11 @@ namespace servodrift::flow
       at_rest = false;
       if (valve.pilot.field_cavitation)
         solver.set_cavitation_pressure(valve.fluid.vapour_pressure - downstream_pressure(dp));
-      return intermediate_tolerance > 0 ? solver.solve_to(std::max(intermediate_tolerance, valve.flow_solver.tolerance), false) :
-                                          solver.solve();
     }
+
+    /// What the current fields give at pressure difference dp (model.md 4.2): Q, C_d, Re, the
+    /// forces and the diagnostics; the iteration counts are the caller's.
+    PilotFieldResult result_of(double dp) const;
 
     /// A case at rest on a fine mesh: the case solved on the mesh of half the resolution, carried
     /// over. Returns false (and leaves the fields at rest) if that solve fails; the caller then
@@ -288,54 +299,79 @@ namespace servodrift::flow
                          format_number(d.valve.pilot.field_turbulent_viscosity_limit) + " Re mu) in " +
                          std::to_string(report.cells_at_viscosity_limit) +
                          " cells: not the model's solution; raise `Pilot stage/Field turbulent viscosity limit'");
-    const double downstream = d.downstream_pressure(dp);
+    const PilotFieldResult fields = d.result_of(dp);
+    const unsigned int iterations = r.iterations, coarse = r.coarse_mesh_iterations;
+    const double relaxation = r.pressure_relaxation;
+    r = fields;
+    r.iterations = iterations, r.coarse_mesh_iterations = coarse, r.pressure_relaxation = relaxation;
+    return r;
+  }
 
-    const double rho = d.conditions.fluid.density, mu = d.conditions.fluid.viscosity;
+  PilotFieldResult PilotField::Implementation::result_of(double dp) const
+  {
+    PilotFieldResult r;
+    const double downstream = downstream_pressure(dp);
+
+    const double rho = conditions.fluid.density, mu = conditions.fluid.viscosity;
     const double v_ideal = ideal_velocity(dp, rho);
     r.pressure_difference = dp;
-    r.turbulence = d.conditions.turbulence;
-    r.flow_rate = d.solver.flow_rate("outlet");
-    r.minimum_pressure = d.solver.minimum_pressure();
+    r.turbulence = conditions.turbulence;
+    r.flow_rate = solver.flow_rate("outlet");
+    r.minimum_pressure = solver.minimum_pressure();
     r.minimum_absolute_pressure = downstream + r.minimum_pressure;
-    const auto gamma = d.solver.liquid_fraction();
+    const auto gamma = solver.liquid_fraction();
     r.cavitating = *std::min_element(gamma.begin(), gamma.end()) < 1 ||
-                   r.minimum_absolute_pressure < d.valve.fluid.vapour_pressure * (1 - 1e-9);
-    const auto y_plus = d.solver.wall_y_plus();
+                   r.minimum_absolute_pressure < valve.fluid.vapour_pressure * (1 - 1e-9);
+    const auto y_plus = solver.wall_y_plus();
     r.max_wall_y_plus = *std::max_element(y_plus.begin(), y_plus.end());
-    for (const double mu_t : d.solver.turbulent_viscosity())
+    for (const double mu_t : solver.turbulent_viscosity())
       r.max_turbulent_viscosity_ratio = std::max(r.max_turbulent_viscosity_ratio, mu_t / mu);
 
-    if (d.kind == PilotGeometry::fixed_orifice)
+    if (kind == PilotGeometry::fixed_orifice)
       {
-        const double area = units::pi * d.bore_radius * d.bore_radius;
+        const double area = units::pi * bore_radius * bore_radius;
         r.discharge_coefficient = r.flow_rate / (area * v_ideal);
-        r.reynolds_number = 2 * d.bore_radius * v_ideal * rho / mu; // E17
+        r.reynolds_number = 2 * bore_radius * v_ideal * rho / mu; // E17
         return r;
       }
-    const double D_N = 2 * d.bore_radius, h = d.gap;
+    const double D_N = 2 * bore_radius, h = gap;
     r.discharge_coefficient = r.flow_rate / (units::pi * D_N * h * v_ideal); // curtain area (4.2)
     const double hydraulic_diameter = 2 * units::pi * D_N * h / (units::pi * D_N + h);
     r.reynolds_number = hydraulic_diameter * r.discharge_coefficient * v_ideal * rho / mu; // E18
     const Vector2 axial(1, 0);
-    r.flapper_force = d.solver.pressure_force("flapper", axial);
-    r.land_force = d.solver.pressure_force("land", -axial);
+    r.flapper_force = solver.pressure_force("flapper", axial);
+    r.land_force = solver.pressure_force("land", -axial);
     // the bore's exit plane: mean pressure and axial momentum (p + rho u_x^2) through it
     double sum = 0, area = 0, momentum = 0;
-    const auto &p = d.solver.pressure();
-    const auto &u = d.solver.velocity_x();
-    const auto &F = d.solver.mass_flux();
-    for (unsigned int f : d.exit_faces)
+    const auto &p = solver.pressure();
+    const auto &u = solver.velocity_x();
+    const auto &F = solver.mass_flux();
+    for (unsigned int f : exit_faces)
       {
-        const double p_f = d.mesh.interpolate(f, p), u_f = d.mesh.interpolate(f, u);
-        sum += p_f * d.mesh.face_area[f];
-        area += d.mesh.face_area[f];
+        const double p_f = mesh.interpolate(f, p), u_f = mesh.interpolate(f, u);
+        sum += p_f * mesh.face_area[f];
+        area += mesh.face_area[f];
         // F n_x = rho u_x A: the +x momentum flux rho u_x^2 A
-        momentum += p_f * d.mesh.face_area[f] + F[f] * d.mesh.face_normal[f].x() * u_f;
+        momentum += p_f * mesh.face_area[f] + F[f] * mesh.face_normal[f].x() * u_f;
       }
     r.bore_pressure = sum / area;
     r.jet_force = 2 * units::pi * momentum;
     return r;
   }
+
+  PilotFieldResult PilotField::advance(double dp, double dt, unsigned int max_iterations, double tolerance)
+  {
+    auto &d = *impl;
+    if (d.solver.boundary_pressure("inlet") != dp)
+      d.prepare_level(dp);
+    const SolveReport step = d.solver.advance(dt, max_iterations, tolerance);
+    PilotFieldResult r = d.result_of(dp);
+    r.iterations = step.iterations;
+    r.pressure_relaxation = step.pressure_relaxation;
+    return r;
+  }
+
+  double PilotField::courant_time_step(double courant) const { return impl->solver.courant_time_step(courant); }
 
   void PilotField::initialize_from(const PilotField &other) { set_fields(other.fields()); }
   FlowFields PilotField::fields() const { return impl->solver.fields(); }

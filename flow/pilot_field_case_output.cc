@@ -49,6 +49,35 @@ namespace servodrift::flow
       return "mesh resolution " + format_number(resolution) +
              ": discretisation error not measured at this resolution (measured at 1 and 2: doc/validation.md)";
     }
+
+    /// flow/<geometry>_time_averages<variant>.csv: the cases without a steady solution, their time
+    /// averages and spreads (flow/pilot_field_time_average.h).
+    void write_time_averages(const ValveDescription &valve, const std::string &name, const CaseRows &records,
+                             const std::string &variant)
+    {
+      CsvDocument doc;
+      doc.comments = {"servodrift-output " + name + "_time_averages",
+                      "field-level cases without a steady solution (flag 5): laminar, marched in time (BDF2) from "
+                      "where the steady iteration stalled; the mean and the standard deviation over the averaged "
+                      "time (Pilot stage/Field time steps, Field averaged fraction, Field time step Courant number)",
+                      "producer " + producer_string("flow/field"), "parameters-sha256 " + valve.parameters_sha256};
+      doc.columns = {"temperature[degC]",
+                     "gap[m]",
+                     "pressure_difference[Pa]",
+                     "discharge_coefficient[1]",
+                     "discharge_coefficient_spread[1]",
+                     "flapper_force[N]",
+                     "flapper_force_spread[N]",
+                     "time_step[s]",
+                     "averaged_time[s]"};
+      for (const auto &r : records)
+        if (r[flag] == flags::time_averaged)
+          doc.rows.push_back({format_cell(r[temperature]), format_cell(r[gap]), format_cell(r[pressure_difference]),
+                              format_cell(r[discharge_coefficient]), format_cell(r[discharge_coefficient_spread]),
+                              format_cell(r[flapper_force]), format_cell(r[flapper_force_spread]),
+                              format_cell(r[time_step]), format_cell(r[averaged_time])});
+      write_file_atomically(flow_directory(valve) + "/" + name + "_time_averages" + variant + ".csv", doc.text());
+    }
   } // namespace
 
   void write_case_summary(const ValveDescription &valve, PilotGeometry g, const CaseRows &records,
@@ -63,7 +92,8 @@ namespace servodrift::flow
                         " cases: results, diagnostics (model.md 4.2, C12) and the reduced-order values (E21-E23) "
                         "beside them; flag 2 = not converged (the table carries the reduced-order value), 4 = "
                         "beyond the verified range (C_d and the reduced-order C_d differ by more than a factor " +
-                        format_number(verified_discharge_factor) + ")",
+                        format_number(verified_discharge_factor) + "), 5 = no steady solution: the time average (" +
+                        name + "_time_averages.csv)",
                       "producer " + producer_string("flow/field"), "parameters-sha256 " + valve.parameters_sha256};
       doc.columns = {"temperature[degC]",
                      "gap[m]",
@@ -88,7 +118,8 @@ namespace servodrift::flow
       std::vector<std::pair<double, std::string>> datasets;
       for (const auto &r : records)
         {
-          const bool converged = r[flag] == flags::computed || r[flag] == flags::beyond_verified;
+          const bool converged =
+            r[flag] == flags::computed || r[flag] == flags::beyond_verified || r[flag] == flags::time_averaged;
           auto cell = [&](double v, bool defined = true) { return defined ? format_cell(v) : std::string(); };
           doc.rows.push_back({cell(r[temperature]), cell(r[gap], !orifice), cell(r[pressure_difference]),
                               model_name(Turbulence(int(r[model]))), cell(r[flow_rate]), cell(r[discharge_coefficient]),
@@ -103,6 +134,8 @@ namespace servodrift::flow
             datasets.emplace_back(datasets.size(), vtu_name(g, r[temperature], r[gap], r[pressure_difference]));
         }
       write_file_atomically(flow_directory(valve) + "/" + name + "_cases" + variant + ".csv", doc.text());
+      if (count_flagged(records, flag, flags::time_averaged) > 0)
+        write_time_averages(valve, name, records, variant);
       if (!datasets.empty())
         write_pvd_atomically(flow_directory(valve) + "/" + name + ".pvd", datasets);
     });
@@ -117,6 +150,10 @@ namespace servodrift::flow
     if (failed > 0)
       std::cerr << "servodrift: warning: " << failed << " of " << records.size() << " " << what
                 << " cases did not converge (flag 2; see flow/*_cases.csv)\n";
+    if (const std::size_t averaged = count_flagged(records, flag, flags::time_averaged); averaged > 0)
+      std::cerr << "servodrift: note: " << averaged << " of " << records.size() << " " << what
+                << " cases have no steady solution: their rows carry the time average (flag 5; the spread in "
+                   "flow/*_time_averages.csv)\n";
     if (const std::size_t beyond = count_flagged(records, flag, flags::beyond_verified); beyond > 0)
       std::cerr << "servodrift: warning: " << beyond << " of " << records.size() << " " << what
                 << " cases lie beyond the range where the field level was verified: their C_d differs from the "

@@ -44,6 +44,11 @@ namespace servodrift::flow
       reduced_discharge_coefficient,
       reduced_flapper_force,
       wall_time,
+      // a time average (flag 5): the standard deviations over the averaged time, and that time
+      discharge_coefficient_spread,
+      flapper_force_spread,
+      averaged_time,
+      time_step,
       record_length
     };
   } // namespace case_record
@@ -119,6 +124,10 @@ namespace servodrift::flow
     /// The second failure propagates.
     PilotFieldResult solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
                                       bool started_elsewhere);
+    /// A laminar case whose steady iteration stalled (`why'): its time average into `record'
+    /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too.
+    bool time_average_of(PilotField &field, double dp, const std::string &where, const std::string &why,
+                         std::vector<double> &record);
 
     const ValveDescription &valve;
     PilotGeometry kind;

@@ -1,5 +1,6 @@
 // The continuation chain of the field-level pilot stage and the helpers of its cases.
 #include "flow/pilot_field_cases.h"
+#include "flow/pilot_field_time_average.h"
 
 #include "common/error.h"
 
@@ -28,6 +29,23 @@ namespace servodrift::flow
           case FlowModel::automatic: break;
         }
       return ideal_reynolds < transition ? Turbulence::laminar : Turbulence::k_epsilon;
+    }
+
+    /// A solve's results into the case record.
+    void record_result(std::vector<double> &record, const PilotFieldResult &r)
+    {
+      record[flow_rate] = r.flow_rate;
+      record[discharge_coefficient] = r.discharge_coefficient;
+      record[reynolds_number] = r.reynolds_number;
+      record[flapper_force] = r.flapper_force;
+      record[land_force] = r.land_force;
+      record[jet_force] = r.jet_force;
+      record[bore_pressure] = r.bore_pressure;
+      record[minimum_absolute_pressure] = r.minimum_absolute_pressure;
+      record[cavitating] = r.cavitating ? 1 : 0;
+      record[max_wall_y_plus] = r.max_wall_y_plus;
+      record[max_turbulent_viscosity_ratio] = r.max_turbulent_viscosity_ratio;
+      record[iterations] = r.iterations;
     }
 
     /// The table temperature whose cases go to VTU with `Output/Flow fields = reference'.
@@ -132,21 +150,13 @@ namespace servodrift::flow
     const OrificeState reduced = orifice ? closed_forms.fixed_orifice(dp) : closed_forms.nozzle(h, dp);
     record[reduced_discharge_coefficient] = reduced.discharge_coefficient;
     record[reduced_flapper_force] = reduced.flapper_force;
+    const std::string where = std::string(orifice ? "fixed orifice" : "nozzle-flapper") + " at " +
+                              format_number(conditions.temperature) + " degC" +
+                              (orifice ? "" : ", gap " + format_number(h * 1e6) + " um") + ", dp " +
+                              format_number(dp * 1e-6) + " MPa (" + model_name(t) + ")";
     try
       {
-        const PilotFieldResult r = solve_with_retry(slot, t, h, dp, start.has_value());
-        record[flow_rate] = r.flow_rate;
-        record[discharge_coefficient] = r.discharge_coefficient;
-        record[reynolds_number] = r.reynolds_number;
-        record[flapper_force] = r.flapper_force;
-        record[land_force] = r.land_force;
-        record[jet_force] = r.jet_force;
-        record[bore_pressure] = r.bore_pressure;
-        record[minimum_absolute_pressure] = r.minimum_absolute_pressure;
-        record[cavitating] = r.cavitating ? 1 : 0;
-        record[max_wall_y_plus] = r.max_wall_y_plus;
-        record[max_turbulent_viscosity_ratio] = r.max_turbulent_viscosity_ratio;
-        record[iterations] = r.iterations;
+        record_result(record, solve_with_retry(slot, t, h, dp, start.has_value()));
         record[flag] = beyond_verified(record[discharge_coefficient], reduced.discharge_coefficient) ?
                          flags::beyond_verified :
                          flags::computed;
@@ -158,10 +168,17 @@ namespace servodrift::flow
       }
     catch (const std::runtime_error &e) // NotConverged or diverged: flagged, the reduced order stands in
       {
-        std::cerr << "servodrift: warning: " << (orifice ? "fixed orifice" : "nozzle-flapper") << " at "
-                  << format_number(conditions.temperature) << " degC"
-                  << (orifice ? "" : ", gap " + format_number(h * 1e6) + " um") << ", dp "
-                  << format_number(dp * 1e-6) << " MPa (" << model_name(t) << "): " << e.what()
+        // a laminar case that stalls may have no steady solution: its time average stands for it
+        if (t == Turbulence::laminar && valve.pilot.field_time_average && dynamic_cast<const NotConverged *>(&e) &&
+            time_average_of(*slot, dp, where, e.what(), record))
+          {
+            record[flag] = flags::time_averaged;
+            record[wall_time] = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+            if (last) // the chain goes on from its last steady state
+              slot->set_fields(*last);
+            return record;
+          }
+        std::cerr << "servodrift: warning: " << where << ": " << e.what()
                   << "; its table row is flagged 2 and carries the reduced-order value\n";
         record[flow_rate] = reduced.flow_rate;
         record[discharge_coefficient] = reduced.discharge_coefficient;
@@ -176,6 +193,27 @@ namespace servodrift::flow
       }
     record[wall_time] = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     return record;
+  }
+
+  bool Chain::time_average_of(PilotField &field, double dp, const std::string &where, const std::string &why,
+                              std::vector<double> &record)
+  {
+    std::cerr << "servodrift: note: " << where << ": " << why << "; marching it in time for its time average\n";
+    try
+      {
+        const TimeAverage a = time_average(field, dp, valve.pilot);
+        record_result(record, a.mean);
+        record[discharge_coefficient_spread] = a.discharge_coefficient_spread;
+        record[flapper_force_spread] = a.flapper_force_spread;
+        record[averaged_time] = a.averaged_time;
+        record[time_step] = a.time_step;
+        return true;
+      }
+    catch (const std::exception &e) // diverged, or no flow to set a time step by
+      {
+        std::cerr << "servodrift: warning: " << where << ": its time average failed too: " << e.what() << "\n";
+        return false;
+      }
   }
 
   void Chain::resume(const State &s)

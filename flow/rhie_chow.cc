@@ -35,4 +35,34 @@ namespace servodrift::flow
       });
     return F;
   }
+
+  void add_time_step_correction(const FvMesh &mesh, double rho, const TimeLevel &time, const std::vector<double> &D,
+                                const BoundaryConditions &boundaries, std::vector<double> &F)
+  {
+    auto level_share = [&](const TimeLevelFields &level, double weight, std::size_t f, double D_f, double m_f,
+                           const Vector2 &u_f) {
+      return weight * m_f * rho * D_f / time.dt * (level.flux[f] - rho * u_f.dot(mesh.face_normal[f]) * mesh.face_area[f]);
+    };
+    auto old_levels = [&](std::size_t f, auto &&at_face) {
+      double sum = at_face(time.last, time.last_weight());
+      if (!time.before.u.empty())
+        sum += at_face(time.before, time.before_weight());
+      return sum;
+    };
+    mesh.for_each_face(
+      [&](std::size_t f, unsigned int, unsigned int) {
+        const double D_f = mesh.interpolate(f, D);
+        F[f] += old_levels(f, [&](const TimeLevelFields &level, double w) {
+          return level_share(level, w, f, D_f, mesh.interpolate(f, level.mixture),
+                             Vector2(mesh.interpolate(f, level.u), mesh.interpolate(f, level.v)));
+        });
+      },
+      [&](std::size_t f, unsigned int P) {
+        if (!boundaries.is_pressure_boundary(f))
+          return;
+        F[f] += old_levels(f, [&](const TimeLevelFields &level, double w) {
+          return level_share(level, w, f, D[P], level.mixture[P], Vector2(level.u[P], level.v[P]));
+        });
+      });
+  }
 } // namespace servodrift::flow

@@ -69,6 +69,8 @@ namespace servodrift::flow
         momentum.solve(state, control.iteration() == 1);
         update_boundary_values();
         std::vector<double> F = rhie_chow_fluxes(mesh, fluid.density, state, momentum.D(), boundaries);
+        if (previous.dt > 0)
+          add_time_step_correction(mesh, fluid.density, previous, momentum.D(), boundaries, F);
         throughput = continuity_reference(mesh, F, boundaries.velocity_inlet_inflow());
         imbalance = pressure.correct(F, state, momentum.D_simplec(), boundaries, cavitation, control.pressure_relaxation());
         state.flux = std::move(F);

@@ -46,7 +46,7 @@ namespace servodrift::flow
     else
       d.previous.before = {};
     d.previous.dt = d.time_step = dt;
-    d.previous.last.u = d.state.u, d.previous.last.v = d.state.v;
+    d.previous.last.u = d.state.u, d.previous.last.v = d.state.v, d.previous.last.flux = d.state.flux;
     d.previous.last.mixture.resize(d.mesh.n_cells());
     for (std::size_t c = 0; c < d.mesh.n_cells(); ++c)
       d.previous.last.mixture[c] = d.cavitation.mixture_ratio(c);

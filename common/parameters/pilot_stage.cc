@@ -74,6 +74,20 @@ namespace servodrift
                       "liquid fraction carries the mass). Without it (single-phase, D11 as printed) the "
                       "suction ring at the land's inner edge falls far below zero absolute at RV-1's "
                       "pressures (C12). [-]");
+    prm.declare_entry("Field time average", "true", Patterns::Bool(),
+                      "Field level: a laminar case whose steady iteration does not converge (a jet that "
+                      "oscillates has no steady solution) is marched in time from where it stopped (BDF2) "
+                      "and reported by its time average, flagged 5, its spread in "
+                      "flow/<geometry>_time_averages.csv. false: flagged 2, the reduced-order value "
+                      "stands in. [-]");
+    prm.declare_entry("Field time step Courant number", "1", Patterns::Double(0.05, 50),
+                      "Field level, time average: the time step, constant, at this largest cell Courant "
+                      "number of the fields it starts from. [1]");
+    prm.declare_entry("Field time steps", "2000", Patterns::Integer(20, 10000000),
+                      "Field level, time average: the time steps marched. [1]");
+    prm.declare_entry("Field averaged fraction", "0.5", Patterns::Double(0.1, 1),
+                      "Field level, time average: the last this fraction of the time steps is averaged "
+                      "(the first part lets the start from the stalled iterate die out). [1]");
     const char *models = "automatic|laminar|k-epsilon|k-epsilon-launder-sharma|k-omega-sst";
     prm.declare_entry("Fixed orifice flow model", "automatic", Patterns::Selection(models),
                       "Field level: flow model of the fixed-orifice cases (D11): laminar, k-epsilon (the "
@@ -144,6 +158,10 @@ namespace servodrift
     field_chamber_length = prm.get_double("Field chamber length");
     field_outlet_radius = prm.get_double("Field outlet radius");
     field_cavitation = prm.get_bool("Field cavitation");
+    field_time_average = prm.get_bool("Field time average");
+    field_time_step_courant = prm.get_double("Field time step Courant number");
+    field_time_steps = static_cast<unsigned int>(prm.get_integer("Field time steps"));
+    field_averaged_fraction = prm.get_double("Field averaged fraction");
     auto model_of = [&](const char *entry) {
       const std::string m = prm.get(entry);
       return m == "laminar"                  ? FlowModel::laminar :

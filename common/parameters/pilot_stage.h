@@ -33,6 +33,10 @@ namespace servodrift
     double field_chamber_length;    ///< orifice downstream chamber length / bore radius [1]
     double field_outlet_radius;     ///< nozzle-flapper outlet radius / land radius [1]
     bool field_cavitation;          ///< field cases model cavitation at the vapour pressure
+    bool field_time_average;        ///< a laminar case without a steady solution is reported by its time average
+    double field_time_step_courant; ///< Courant number of the time step of a time average [1]
+    unsigned int field_time_steps;  ///< time steps of a time average
+    double field_averaged_fraction; ///< the last fraction of them that is averaged [1]
     /// flow model of a field case: automatic picks laminar below the transition Reynolds number
     /// (ideal velocity: E17 for the orifice, 2h sqrt(2 dp/rho)/nu for the nozzle) and k-epsilon above
     enum class FlowModel { automatic, laminar, k_epsilon, k_epsilon_launder_sharma, k_omega_sst };
