@@ -70,16 +70,22 @@ namespace servodrift::system
                              valve.parameters_sha256.substr(0, 12) + "); its numbers come from that valve description");
     for (const Table *table : {&t.torque_motor, &t.spring_tube, &t.fixed_orifice, &t.nozzle_flapper})
       {
-        std::size_t not_converged = 0, beyond_verified = 0;
+        std::size_t not_converged = 0, beyond_verified = 0, time_averaged = 0;
         for (const auto &row : table->rows)
           {
             not_converged += row.back() == flags::not_converged;
             beyond_verified += row.back() == flags::beyond_verified;
+            time_averaged += row.back() == flags::time_averaged;
           }
         if (not_converged > 0)
           t.warnings.push_back("tables/" + table->name() + ".csv: " + std::to_string(not_converged) + " of " +
                                std::to_string(table->rows.size()) +
                                " rows did not converge at the field level (flag 2): the reduced-order value stands in");
+        if (time_averaged > 0)
+          t.warnings.push_back("tables/" + table->name() + ".csv: " + std::to_string(time_averaged) + " of " +
+                               std::to_string(table->rows.size()) +
+                               " rows have no steady solution at the field level (flag 5): they carry the time "
+                               "average, its spread in flow/" + table->name() + "_time_averages.csv");
         if (beyond_verified > 0)
           t.warnings.push_back("tables/" + table->name() + ".csv: " + std::to_string(beyond_verified) + " of " +
                                std::to_string(table->rows.size()) +
