@@ -3,8 +3,8 @@
 // um and 0.1 MPa (Re_n 36: laminar and steady), where the answer is known: the steady solution.
 // - Marched from its converged steady fields, the case stays there: each step's implicit equations
 //   are converged to scaled residuals of 1e-4, so the mean may differ from the steady C_dn and force
-//   by about that, and the Rhie-Chow fluxes' time-step correction leaves 2e-5 (flow/rhie_chow.h): 1e-4
-//   relative, and a spread below 1e-5 relative (a steady flow does not move).
+//   by about that, and the under-relaxation in the Rhie-Chow fluxes' D leaves a small dependence on
+//   dt (flow/rhie_chow.h): 2e-4 relative, and a spread below 1e-5 relative (a steady flow does not move).
 // - A case whose steady iteration stalls (here: a tolerance it cannot reach, 1e-14, within 600
 //   iterations) is marched in time by the chain and reported by its time average, flagged 5: from the
 //   stalled iterate the flow settles on the steady solution, so the mean must be the properly
@@ -36,13 +36,14 @@ namespace servodrift::flow
     PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, gap_40um);
     const PilotFieldResult steady = nozzle.solve(dp_laminar);
     const TimeAverage a = time_average(nozzle, dp_laminar, v.pilot);
-    std::printf("steady C_dn %.6f, F %.6f N; marched %u steps of %.3g s: C_dn %.6f +- %.2e, F %.6f +- %.2e N, "
-                "%u iterations\n",
+    std::printf("steady C_dn %.6f, F %.6f N; marched %u steps of %.3g s: C_dn %+.2e, F %+.2e relative, spreads "
+                "%.2e, %.2e relative, %u iterations\n",
                 steady.discharge_coefficient, steady.flapper_force, v.pilot.field_time_steps, a.time_step,
-                a.mean.discharge_coefficient, a.discharge_coefficient_spread, a.mean.flapper_force, a.flapper_force_spread,
+                a.mean.discharge_coefficient / steady.discharge_coefficient - 1, a.mean.flapper_force / steady.flapper_force - 1,
+                a.discharge_coefficient_spread / steady.discharge_coefficient, a.flapper_force_spread / steady.flapper_force,
                 a.mean.iterations);
-    EXPECT_NEAR(a.mean.discharge_coefficient / steady.discharge_coefficient, 1, 1e-4);
-    EXPECT_NEAR(a.mean.flapper_force / steady.flapper_force, 1, 1e-4);
+    EXPECT_NEAR(a.mean.discharge_coefficient / steady.discharge_coefficient, 1, 2e-4);
+    EXPECT_NEAR(a.mean.flapper_force / steady.flapper_force, 1, 2e-4);
     EXPECT_LT(a.discharge_coefficient_spread, 1e-5 * steady.discharge_coefficient);
     EXPECT_LT(a.flapper_force_spread, 1e-5 * steady.flapper_force);
     EXPECT_NEAR(a.averaged_time, 50 * a.time_step, 1e-12 * a.averaged_time);
@@ -63,11 +64,11 @@ namespace servodrift::flow
       stalling.push_back(s);
     ValveDescription v = test::valve(stalling);
     const std::vector<double> r = Chain(v, PilotGeometry::nozzle_flapper, 40).solve(gap_40um, dp_laminar);
-    std::printf("stalled laminar nozzle: flag %g, C_dn %.6f +- %.2e (steady %.6f), F %.6f +- %.2e N (steady %.6f), "
-                "averaged over %.3g s in steps of %.3g s, %g iterations\n",
-                r[flag], r[discharge_coefficient], r[discharge_coefficient_spread], steady[discharge_coefficient],
-                r[flapper_force], r[flapper_force_spread], steady[flapper_force], r[averaged_time], r[time_step],
-                r[iterations]);
+    std::printf("stalled laminar nozzle: flag %g, C_dn %+.2e, F %+.2e relative to the converged case, spreads %.2e, "
+                "%.2e relative, averaged over %.3g s in steps of %.3g s, %g iterations\n",
+                r[flag], r[discharge_coefficient] / steady[discharge_coefficient] - 1,
+                r[flapper_force] / steady[flapper_force] - 1, r[discharge_coefficient_spread] / steady[discharge_coefficient],
+                r[flapper_force_spread] / steady[flapper_force], r[averaged_time], r[time_step], r[iterations]);
     ASSERT_EQ(r[flag], flags::time_averaged);
     EXPECT_NEAR(r[discharge_coefficient] / steady[discharge_coefficient], 1, 1e-3);
     EXPECT_NEAR(r[flapper_force] / steady[flapper_force], 1, 1e-3);
