@@ -201,7 +201,12 @@ namespace servodrift::flow
     std::cerr << "servodrift: note: " << where << ": " << why << "; marching it in time for its time average\n";
     try
       {
-        const TimeAverage a = time_average(field, dp, valve.pilot);
+        const unsigned int interval = valve.flow_solver.report_interval; // `Report interval': every this many steps
+        const TimeAverage a = time_average(field, dp, valve.pilot, [&](unsigned int step, double time, const PilotFieldResult &r) {
+          if (interval > 0 && step % interval == 0)
+            std::fprintf(stderr, "  time step %u, t %.4g s: C_d %.6f, flapper force %.6f N, %u iterations%s\n", step, time,
+                         r.discharge_coefficient, r.flapper_force, r.iterations, r.cavitating ? ", cavitating" : "");
+        });
         record_result(record, a.mean);
         record[discharge_coefficient_spread] = a.discharge_coefficient_spread;
         record[flapper_force_spread] = a.flapper_force_spread;

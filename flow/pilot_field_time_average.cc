@@ -29,7 +29,8 @@ namespace servodrift::flow
     };
   } // namespace
 
-  TimeAverage time_average(PilotField &field, double dp, const PilotStageParameters &settings)
+  TimeAverage time_average(PilotField &field, double dp, const PilotStageParameters &settings,
+                           const std::function<void(unsigned int, double, const PilotFieldResult &)> &each_step)
   {
     TimeAverage a;
     a.time_step = field.courant_time_step(settings.field_time_step_courant);
@@ -42,6 +43,8 @@ namespace servodrift::flow
       {
         const PilotFieldResult r = field.advance(dp, a.time_step, step_iterations, step_tolerance);
         m.iterations += r.iterations;
+        if (each_step)
+          each_step(step + 1, (step + 1) * a.time_step, r);
         if (step + averaged < steps)
           continue;
         Q.add(r.flow_rate), C_d.add(r.discharge_coefficient), Re.add(r.reynolds_number);

@@ -7,6 +7,8 @@
 #include "common/parameters/pilot_stage.h"
 #include "flow/pilot_field.h"
 
+#include <functional>
+
 namespace servodrift::flow
 {
   struct TimeAverage
@@ -23,5 +25,7 @@ namespace servodrift::flow
   /// Marches `field' at pressure difference dp from its current fields (`Field time steps' steps at
   /// `Field time step Courant number'), averaging the last `Field averaged fraction' of them. Throws
   /// std::runtime_error if a step diverges, std::invalid_argument for a turbulent case.
-  TimeAverage time_average(PilotField &field, double pressure_difference, const PilotStageParameters &settings);
+  /// `each_step', if set, sees every step's results (a progress report).
+  TimeAverage time_average(PilotField &field, double pressure_difference, const PilotStageParameters &settings,
+                           const std::function<void(unsigned int step, double time, const PilotFieldResult &)> &each_step = {});
 } // namespace servodrift::flow
