@@ -28,6 +28,14 @@ namespace servodrift::flow
     {
       return gamma[cell] + (1 - gamma[cell]) * vapour_ratio;
     }
+    /// m of every cell.
+    std::vector<double> mixture_ratios() const
+    {
+      std::vector<double> m(gamma.size());
+      for (std::size_t c = 0; c < m.size(); ++c)
+        m[c] = mixture_ratio(c);
+      return m;
+    }
     /// The mixture density ratio that face f carries with the flux F (upwind; an inflow is liquid;
     /// 1 without cavitation).
     double face_mixture_ratio(std::size_t f, double F) const

@@ -60,12 +60,12 @@ namespace servodrift::flow
     {
       return last_weight() * last.mixture[c] + (before.u.empty() ? 0.0 : before_weight() * before.mixture[c]);
     }
-    double old_momentum(int component, std::size_t c) const
+    /// sum over the old levels of weight x velocity component
+    double old_velocity(int component, std::size_t c) const
     {
-      const auto &now = component == 0 ? last.u : last.v;
-      double sum = last_weight() * last.mixture[c] * now[c];
+      double sum = last_weight() * (component == 0 ? last.u : last.v)[c];
       if (!before.u.empty())
-        sum += before_weight() * before.mixture[c] * (component == 0 ? before.u : before.v)[c];
+        sum += before_weight() * (component == 0 ? before.u : before.v)[c];
       return sum;
     }
   };

@@ -42,6 +42,9 @@ namespace servodrift::flow
     /// values as well as the pattern).
     void solve(FlowState &state, bool first_iteration);
 
+    /// The under-relaxation alpha_u of the next assemblies (default: `Velocity relaxation').
+    void set_relaxation(double alpha) { settings.velocity_relaxation = alpha; }
+    double relaxation() const { return settings.velocity_relaxation; }
     /// The relaxed equation of component 0 (x) or 1 (y, radial).
     const FvMatrix &component(int i) const { return equation[i]; }
     const std::vector<double> &D() const { return D_rhie_chow; }

@@ -37,32 +37,32 @@ namespace servodrift::flow
   }
 
   void add_time_step_correction(const FvMesh &mesh, double rho, const TimeLevel &time, const std::vector<double> &D,
-                                const BoundaryConditions &boundaries, std::vector<double> &F)
+                                const std::vector<double> &mixture, const BoundaryConditions &boundaries,
+                                std::vector<double> &F)
   {
-    auto level_share = [&](const TimeLevelFields &level, double weight, std::size_t f, double D_f, double m_f,
-                           const Vector2 &u_f) {
-      return weight * m_f * rho * D_f / time.dt * (level.flux[f] - rho * u_f.dot(mesh.face_normal[f]) * mesh.face_area[f]);
-    };
-    auto old_levels = [&](std::size_t f, auto &&at_face) {
-      double sum = at_face(time.last, time.last_weight());
-      if (!time.before.u.empty())
-        sum += at_face(time.before, time.before_weight());
+    // rho m D/dt per cell, the share of the time term in the cell's diagonal (at most 1/w_new), and
+    // interpolated as one: across a cavity's edge m and D each change a thousandfold in opposite
+    // directions, and the product of their separate interpolations exceeded 1 there and drove the
+    // steady cavitating null unstable
+    std::vector<double> share(mesh.n_cells());
+    for (std::size_t c = 0; c < share.size(); ++c)
+      share[c] = rho * mixture[c] * D[c] / time.dt;
+    auto old_levels = [&](std::size_t f, double share_f, const auto &velocity_at_face) {
+      double sum = 0;
+      for (const auto &[level, weight] : {std::pair{&time.last, time.last_weight()}, std::pair{&time.before, time.before_weight()}})
+        if (!level->u.empty())
+          sum += weight * share_f * (level->flux[f] - rho * velocity_at_face(*level).dot(mesh.face_normal[f]) * mesh.face_area[f]);
       return sum;
     };
     mesh.for_each_face(
       [&](std::size_t f, unsigned int, unsigned int) {
-        const double D_f = mesh.interpolate(f, D);
-        F[f] += old_levels(f, [&](const TimeLevelFields &level, double w) {
-          return level_share(level, w, f, D_f, mesh.interpolate(f, level.mixture),
-                             Vector2(mesh.interpolate(f, level.u), mesh.interpolate(f, level.v)));
+        F[f] += old_levels(f, mesh.interpolate(f, share), [&](const TimeLevelFields &level) {
+          return Vector2(mesh.interpolate(f, level.u), mesh.interpolate(f, level.v));
         });
       },
       [&](std::size_t f, unsigned int P) {
-        if (!boundaries.is_pressure_boundary(f))
-          return;
-        F[f] += old_levels(f, [&](const TimeLevelFields &level, double w) {
-          return level_share(level, w, f, D[P], level.mixture[P], Vector2(level.u[P], level.v[P]));
-        });
+        if (boundaries.is_pressure_boundary(f))
+          F[f] += old_levels(f, share[P], [&](const TimeLevelFields &level) { return Vector2(level.u[P], level.v[P]); });
       });
   }
 } // namespace servodrift::flow

@@ -29,13 +29,14 @@ namespace servodrift::flow
                                        const std::vector<double> &D, const BoundaryConditions &boundaries);
 
   /// With a time step (SimplecSolver::advance), the face's share of the old levels' momentum (Choi,
-  /// AIAA J. 37 (1999) 1155): F_f += rho D_f/dt sum_k w_k m_k,f (F_k,f - rho u_k,f . S), the old
-  /// flux less its interpolated velocity's, w_k the weights of the time levels (flow_state.h). Without
-  /// it the interpolation would see the old levels' momentum only through the cell velocities and the
-  /// converged fields of a steady flow would depend on dt: marched to steady at Courant 10, RV-1's
-  /// laminar C_dn differs from the steady solver's by 2.2e-4 without, 2e-5 with it (the rest: alpha_u
-  /// in D, pilot_field_time_average_test.cc).
+  /// AIAA J. 37 (1999) 1155): F_f += (rho m D/dt)_f sum_k w_k (F_k,f - rho u_k,f . S), the old
+  /// flux less its interpolated velocity's, w_k the weights of the time levels (flow_state.h), m the
+  /// current mixture density ratio (the momentum equations' time term's). Without it the
+  /// interpolation would see the old levels' momentum only through the cell velocities and a flow
+  /// marched to rest would depend on dt; with it (and alpha_u = 1 in a step) it is the steady
+  /// solution. rho m D/dt is interpolated as one cell value.
   /// Interior faces and pressure boundaries (one-sided, the owner's D and velocity).
   void add_time_step_correction(const FvMesh &mesh, double density, const TimeLevel &time, const std::vector<double> &D,
-                                const BoundaryConditions &boundaries, std::vector<double> &F);
+                                const std::vector<double> &mixture, const BoundaryConditions &boundaries,
+                                std::vector<double> &F);
 } // namespace servodrift::flow

@@ -70,7 +70,7 @@ namespace servodrift::flow
         update_boundary_values();
         std::vector<double> F = rhie_chow_fluxes(mesh, fluid.density, state, momentum.D(), boundaries);
         if (previous.dt > 0)
-          add_time_step_correction(mesh, fluid.density, previous, momentum.D(), boundaries, F);
+          add_time_step_correction(mesh, fluid.density, previous, momentum.D(), cavitation.mixture_ratios(), boundaries, F);
         throughput = continuity_reference(mesh, F, boundaries.velocity_inlet_inflow());
         imbalance = pressure.correct(F, state, momentum.D_simplec(), boundaries, cavitation, control.pressure_relaxation());
         state.flux = std::move(F);

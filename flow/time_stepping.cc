@@ -24,10 +24,14 @@ namespace servodrift::flow
       source.resize(n);
     for (std::size_t c = 0; c < n; ++c)
       {
-        const double per_step = fluid.density * mesh.cell_volume[c] / previous.dt;
-        time_term.diagonal[c] = per_step * previous.new_weight() * cavitation.mixture_ratio(c);
-        time_term.source[0][c] = per_step * previous.old_momentum(0, c);
-        time_term.source[1][c] = per_step * previous.old_momentum(1, c);
+        // rho_m du/dt, the current mixture's density on every level: a cell that changes phase within a
+        // step changes its density a thousandfold, and the conservative d(rho_m u)/dt then turned the
+        // mass the pressure correction does not see (a liquid cell has no storage) into momentum
+        // (RV-1's steady cavitating null diverged within five steps)
+        const double per_step = fluid.density * cavitation.mixture_ratio(c) * mesh.cell_volume[c] / previous.dt;
+        time_term.diagonal[c] = per_step * previous.new_weight();
+        time_term.source[0][c] = per_step * previous.old_velocity(0, c);
+        time_term.source[1][c] = per_step * previous.old_velocity(1, c);
       }
     return time_term;
   }
@@ -58,6 +62,17 @@ namespace servodrift::flow
     inner.cycle_window = inner.stall_window = 0;
     inner.max_iterations = max_iterations;
     IterationControl control(inner, tolerance, nullptr, false);
+    // no under-relaxation of momentum within a step: the time term keeps its equations diagonally
+    // dominant, and with alpha_u < 1 the Rhie-Chow fluxes of a flow at rest in time would keep a
+    // dependence on dt (D = alpha_u V/(a_P + rho V/dt) against Choi's correction)
+    const double steady_relaxation = d.momentum.relaxation();
+    d.momentum.set_relaxation(1);
+    struct Restore
+    {
+      MomentumEquation &momentum;
+      double alpha;
+      ~Restore() { momentum.set_relaxation(alpha); }
+    } restore{d.momentum, steady_relaxation};
     Residuals r;
     for (bool done = false; !done;)
       {
