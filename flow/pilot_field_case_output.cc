@@ -9,6 +9,7 @@
 #include "common/version.h"
 #include "common/vtu_output.h"
 
+#include <algorithm>
 #include <iostream>
 #include <string>
 #include <utility>
@@ -57,9 +58,10 @@ namespace servodrift::flow
     {
       CsvDocument doc;
       doc.comments = {"servodrift-output " + name + "_time_averages",
-                      "field-level cases without a steady solution (flag 5): laminar, marched in time (BDF2) from "
-                      "where the steady iteration stalled; the mean and the standard deviation over the averaged "
-                      "time (Pilot stage/Field time steps, Field averaged fraction, Field time step Courant number)",
+                      "field-level laminar cases whose steady iteration stalled, marched in time (BDF2): the mean "
+                      "and the standard deviation over the averaged time (Pilot stage/Field time steps, Field "
+                      "averaged fraction, Field time step Courant number); flag 5: the table uses the mean, 2: its "
+                      "spread is beyond Field time average spread limit and the reduced-order value stands in",
                       "producer " + producer_string("flow/field"), "parameters-sha256 " + valve.parameters_sha256};
       doc.columns = {"temperature[degC]",
                      "gap[m]",
@@ -69,13 +71,14 @@ namespace servodrift::flow
                      "flapper_force[N]",
                      "flapper_force_spread[N]",
                      "time_step[s]",
-                     "averaged_time[s]"};
+                     "averaged_time[s]",
+                     "flag[1]"};
       for (const auto &r : records)
-        if (r[flag] == flags::time_averaged)
+        if (r[averaged_time] > 0)
           doc.rows.push_back({format_cell(r[temperature]), format_cell(r[gap]), format_cell(r[pressure_difference]),
-                              format_cell(r[discharge_coefficient]), format_cell(r[discharge_coefficient_spread]),
-                              format_cell(r[flapper_force]), format_cell(r[flapper_force_spread]),
-                              format_cell(r[time_step]), format_cell(r[averaged_time])});
+                              format_cell(r[averaged_discharge_coefficient]), format_cell(r[discharge_coefficient_spread]),
+                              format_cell(r[averaged_flapper_force]), format_cell(r[flapper_force_spread]),
+                              format_cell(r[time_step]), format_cell(r[averaged_time]), format_cell(r[flag])});
       write_file_atomically(flow_directory(valve) + "/" + name + "_time_averages" + variant + ".csv", doc.text());
     }
   } // namespace
@@ -134,7 +137,7 @@ namespace servodrift::flow
             datasets.emplace_back(datasets.size(), vtu_name(g, r[temperature], r[gap], r[pressure_difference]));
         }
       write_file_atomically(flow_directory(valve) + "/" + name + "_cases" + variant + ".csv", doc.text());
-      if (count_flagged(records, flag, flags::time_averaged) > 0)
+      if (std::any_of(records.begin(), records.end(), [](const auto &r) { return r[averaged_time] > 0; }))
         write_time_averages(valve, name, records, variant);
       if (!datasets.empty())
         write_pvd_atomically(flow_directory(valve) + "/" + name + ".pvd", datasets);

@@ -44,8 +44,11 @@ namespace servodrift::flow
       reduced_discharge_coefficient,
       reduced_flapper_force,
       wall_time,
-      // a time average (flag 5): the standard deviations over the averaged time, and that time
+      // a time average (flag 5, or flag 2 where its spread is beyond the limit): the means and
+      // standard deviations over the averaged time, that time and the time step (0: none)
+      averaged_discharge_coefficient,
       discharge_coefficient_spread,
+      averaged_flapper_force,
       flapper_force_spread,
       averaged_time,
       time_step,
@@ -125,7 +128,8 @@ namespace servodrift::flow
     PilotFieldResult solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
                                       bool started_elsewhere);
     /// A laminar case whose steady iteration stalled (`why'): its time average into `record'
-    /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too.
+    /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too or its spread is
+    /// beyond `Field time average spread limit' (the average is then recorded, not used).
     bool time_average_of(PilotField &field, double dp, const std::string &where, const std::string &why,
                          std::vector<double> &record);
 

@@ -3,6 +3,7 @@
 foreach(name PilotFieldStage.OrificePathOverTemperatureKeepsTheAnswer Calibration.NoisyDataCoverTheTruth
              PilotField.MeshConvergence PilotField.FixedOrificeFollowsLichtarowiczWithKEpsilon
              PilotField.CaughtCyclesLeaveTheAnswerUnchanged PilotField.GridSequencingKeepsTheFineMeshAnswer
+             PilotFieldStage.StalledLaminarCaseIsReportedByItsTimeAverage
              TurbulenceValidation/BackwardFacingStep.ReattachmentLength/TwoLayer
              TurbulenceValidation/BackwardFacingStep.ReattachmentLength/SST
              TurbulenceValidation/ImpingingJet.WallJetProfiles/TwoLayer

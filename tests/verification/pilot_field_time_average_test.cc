@@ -11,7 +11,7 @@
 //   stalled iterate the flow settles on the steady solution, so the mean must be the properly
 //   converged case's C_dn and force within 1e-3 relative (the averaged half of the run starts once
 //   the start's transient has decayed below that), with the averaged time, the time step and
-//   the iterations recorded.
+//   the iterations recorded. With a spread limit of 0 the same average is recorded but not used.
 #include "common/table.h"
 #include "flow/pilot_field_cases.h"
 #include "flow/pilot_field_time_average.h"
@@ -76,6 +76,16 @@ namespace servodrift::flow
     EXPECT_GT(r[averaged_time], 0);
     EXPECT_NEAR(r[averaged_time], 200 * r[time_step], 1e-12 * r[averaged_time]);
     EXPECT_GT(r[iterations], 400); // at least one per step
+
+    // a spread beyond `Field time average spread limit' (0 here: any) is not used: flag 2, the
+    // reduced-order value in the row, the average kept for flow/*_time_averages.csv
+    stalling.push_back("Pilot stage/Field time average spread limit=0");
+    ValveDescription strict = test::valve(stalling);
+    const std::vector<double> rejected = Chain(strict, PilotGeometry::nozzle_flapper, 40).solve(gap_40um, dp_laminar);
+    EXPECT_EQ(rejected[flag], flags::not_converged);
+    EXPECT_EQ(rejected[discharge_coefficient], rejected[reduced_discharge_coefficient]);
+    EXPECT_EQ(rejected[averaged_discharge_coefficient], r[discharge_coefficient]);
+    EXPECT_GT(rejected[averaged_time], 0);
   }
 } // namespace servodrift::flow
 
