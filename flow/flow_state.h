@@ -44,8 +44,9 @@ namespace servodrift::flow
   };
 
   /// The time derivative of SimplecSolver::advance, second-order backward differences (BDF2; the
-  /// first step after a start, or after dt changed, implicit Euler): d(m phi)/dt at the new level is
-  /// (new_weight m phi - sum of the old levels' weighted m phi)/dt.
+  /// first step after a start, or after dt changed, implicit Euler): dphi/dt at the new level is
+  /// (new_weight phi - sum of the old levels' weighted phi)/dt; a cavitating cell's mass balance
+  /// takes the same of the mixture ratio m.
   struct TimeLevel
   {
     double dt = 0;            ///< [s]; 0: steady

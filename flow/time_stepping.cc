@@ -1,11 +1,11 @@
-// SimplecSolver: time stepping (BDF2, its first step implicit Euler) for flows without a steady solution, whose time
-// average then stands for them (doc/method.md, "Time stepping"). Each step is the steady iteration
-// with the time term d(rho_m u)/dt V in the momentum equations (momentum_equation.h) and the
-// change of a cavitating cell's mass in its liquid-fraction balance (cavitation_model.h); the
-// pressure correction is unchanged (the liquid is incompressible, a cavitating cell holds p_cav).
-// The Rhie-Chow face fluxes carry no time-step correction (Choi 1999), so a converged transient
-// depends slightly on dt through the fluxes' pressure smoothing; the verification measures the
-// whole (tests/verification/flow_time_stepping_test.cc).
+// SimplecSolver: time stepping (BDF2, its first step implicit Euler) for flows without a steady
+// solution, whose time average then stands for them (doc/method.md, "Time stepping and time
+// averages"). Each step is the steady iteration with the time term rho_m V du/dt in the momentum
+// equations (momentum_equation.h), the old levels' share of the Rhie-Chow fluxes (Choi's correction,
+// rhie_chow.h) and the change of a cavitating cell's mass in its liquid-fraction balance
+// (cavitation_model.h); the pressure correction is unchanged (the liquid is incompressible, a
+// cavitating cell holds p_cav). Verified in tests/verification/flow_time_stepping_test.cc and
+// pilot_field_time_average_test.cc.
 #include "flow/simplec_implementation.h"
 
 #include "common/error.h"
