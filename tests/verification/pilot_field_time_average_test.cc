@@ -98,8 +98,8 @@ namespace servodrift::flow
   // unconverged: the cavitating cells' own mass balance, which the steady convergence test does not
   // include (up to 2.6e-3 of the throughput on this mesh, doc/method.md), and the fluxes' alpha_u
   // (0.9 steady, 1 in a step). 1e-3 in C_dn and 1 % in force, below this mesh's discretisation
-  // error (doc/validation.md). Marched longer, the cavity moves further (C_dn +0.08 %, single
-  // steps with the force 25 % up, by 1.1 us): doc/validation.md.
+  // error (doc/validation.md). Marched longer, the cavity moves further (C_dn +0.23 % and
+  // single steps with the force 25 % up by 1.1 us): doc/validation.md.
   TEST(PilotFieldTimeAverage, SteadyCavitatingCaseStaysSteady)
   {
     ValveDescription v = test::valve({"Pilot stage/Field time steps=100", "Pilot stage/Field time step Courant number=1",
