@@ -51,28 +51,34 @@ namespace servodrift::flow
              ": discretisation error not measured at this resolution (measured at 1 and 2: doc/validation.md)";
     }
 
+    /// A document of the field-level cases: its header lines and the columns of a case's inputs.
+    CsvDocument case_document(const ValveDescription &valve, const std::string &output, const std::string &description)
+    {
+      CsvDocument doc;
+      doc.comments = {"servodrift-output " + output, description, "producer " + producer_string("flow/field"),
+                      "parameters-sha256 " + valve.parameters_sha256};
+      doc.columns = {"temperature[degC]", "gap[m]", "pressure_difference[Pa]"};
+      return doc;
+    }
+
     /// flow/<geometry>_time_averages<variant>.csv: the cases without a steady solution, their time
     /// averages and spreads (flow/pilot_field_time_average.h).
     void write_time_averages(const ValveDescription &valve, const std::string &name, const CaseRows &records,
                              const std::string &variant)
     {
-      CsvDocument doc;
-      doc.comments = {"servodrift-output " + name + "_time_averages",
-                      "field-level laminar cases whose steady iteration stalled, marched in time (BDF2): the mean "
-                      "and the standard deviation over the averaged time (Pilot stage/Field time steps, Field "
-                      "averaged fraction, Field time step Courant number); flag 5: the table uses the mean, 2: its "
-                      "spread is beyond Field time average spread limit and the reduced-order value stands in",
-                      "producer " + producer_string("flow/field"), "parameters-sha256 " + valve.parameters_sha256};
-      doc.columns = {"temperature[degC]",
-                     "gap[m]",
-                     "pressure_difference[Pa]",
-                     "discharge_coefficient[1]",
+      CsvDocument doc = case_document(
+        valve, name + "_time_averages",
+        "field-level laminar cases whose steady iteration stalled, marched in time (BDF2): the mean and the standard "
+        "deviation over the averaged time (Pilot stage/Field time steps, Field averaged fraction, Field time step "
+        "Courant number); flag 5: the table uses the mean, 2: its spread is beyond Field time average spread limit "
+        "and the reduced-order value stands in");
+      doc.columns.insert(doc.columns.end(), {"discharge_coefficient[1]",
                      "discharge_coefficient_spread[1]",
                      "flapper_force[N]",
                      "flapper_force_spread[N]",
                      "time_step[s]",
                      "averaged_time[s]",
-                     "flag[1]"};
+                     "flag[1]"});
       for (const auto &r : records)
         if (r[averaged_time] > 0)
           doc.rows.push_back({format_cell(r[temperature]), format_cell(r[gap]), format_cell(r[pressure_difference]),
@@ -89,19 +95,15 @@ namespace servodrift::flow
     const bool orifice = g == PilotGeometry::fixed_orifice;
     const std::string name = orifice ? "fixed_orifice" : "nozzle_flapper";
     on_rank_zero([&] {
-      CsvDocument doc;
-      doc.comments = {"servodrift-output " + name + "_cases",
-                      "field-level " + std::string(orifice ? "fixed-orifice" : "nozzle-flapper") +
-                        " cases: results, diagnostics (model.md 4.2, C12) and the reduced-order values (E21-E23) "
-                        "beside them; flag 2 = not converged (the table carries the reduced-order value), 4 = "
-                        "beyond the verified range (C_d and the reduced-order C_d differ by more than a factor " +
-                        format_number(verified_discharge_factor) + "), 5 = no steady solution: the time average (" +
-                        name + "_time_averages.csv)",
-                      "producer " + producer_string("flow/field"), "parameters-sha256 " + valve.parameters_sha256};
-      doc.columns = {"temperature[degC]",
-                     "gap[m]",
-                     "pressure_difference[Pa]",
-                     "flow_model[-]",
+      CsvDocument doc = case_document(
+        valve, name + "_cases",
+        "field-level " + std::string(orifice ? "fixed-orifice" : "nozzle-flapper") +
+          " cases: results, diagnostics (model.md 4.2, C12) and the reduced-order values (E21-E23) beside them; flag "
+          "2 = not converged (the table carries the reduced-order value), 4 = beyond the verified range (C_d and the "
+          "reduced-order C_d differ by more than a factor " +
+          format_number(verified_discharge_factor) + "), 5 = no steady solution: the time average (" + name +
+          "_time_averages.csv)");
+      doc.columns.insert(doc.columns.end(), {"flow_model[-]",
                      "flow_rate[m^3/s]",
                      "discharge_coefficient[1]",
                      "reduced_order_discharge_coefficient[1]",
@@ -117,7 +119,7 @@ namespace servodrift::flow
                      "max_turbulent_viscosity_ratio[1]",
                      "iterations[1]",
                      "wall_time[s]",
-                     "flag[1]"};
+                     "flag[1]"});
       std::vector<std::pair<double, std::string>> datasets;
       for (const auto &r : records)
         {
