@@ -125,8 +125,7 @@ namespace servodrift
                       "(tables/<table>.<model>.csv); the system stage reports the spread of C_dn, the "
                       "flapper force and K_f between them and the default as the model-form uncertainty "
                       "(system/model_form_spread.csv, a band in the report). laminar: only where the "
-                      "transition Reynolds number says it is plausible. Each costs about a flow stage. "
-                      "Empty: none. [-]");
+                      "transition Reynolds number allows it. Each costs a flow stage. Empty: none. [-]");
     prm.declare_entry("Fixed orifice law", "lichtarowicz", Patterns::Selection("lichtarowicz|paper-fit"),
                       "Reduced-order fixed-orifice discharge coefficient: lichtarowicz (E21, RV-1) or "
                       "paper-fit (the paper's cubic E26 in Re_0, clamped to its window Re_0 in "
