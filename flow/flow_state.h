@@ -41,6 +41,8 @@ namespace servodrift::flow
   struct TimeLevelFields
   {
     std::vector<double> u, v, mixture, flux;
+    /// the turbulence model's transported fields (TurbulenceModel::transported_fields)
+    std::vector<std::vector<double>> turbulence;
   };
 
   /// The time derivative of SimplecSolver::advance, second-order backward differences (BDF2; the
@@ -69,6 +71,17 @@ namespace servodrift::flow
         sum += before_weight() * (component == 0 ? before.u : before.v)[c];
       return sum;
     }
+    /// sum over the old levels of weight x the turbulence model's transported field `field'
+    double old_turbulence(std::size_t field, std::size_t c) const
+    {
+      double sum = last_weight() * last.turbulence[field][c];
+      if (!before.u.empty())
+        sum += before_weight() * before.turbulence[field][c];
+      return sum;
+    }
+    /// rho_m V/dt of each cell in the current iteration (the momentum equations' and the turbulence
+    /// model's time terms) [kg/s]
+    std::vector<double> storage_rate;
   };
 
   /// The solver's own state at one iteration.

@@ -27,7 +27,8 @@ namespace servodrift::flow
     update_face_viscosity();
   }
 
-  TurbulenceResiduals KEpsilonModel::correct(const FlowState &s, const std::vector<double> &convecting_flux)
+  TurbulenceResiduals KEpsilonModel::correct(const FlowState &s, const std::vector<double> &convecting_flux,
+                                             const TimeLevel *time)
   {
     using Kind = BoundaryCondition::Kind;
     const std::size_t n = mesh.n_cells(), nf = mesh.n_faces();
@@ -112,6 +113,8 @@ namespace servodrift::flow
         k_equation.diagonal[c] += (rho * dissipation[c] + k_sink[c]) / kc * V;
         k_equation.b[c] += production[c] * V;
       }
+    if (time)
+      add_time_term(k_equation, *time, 0);
     for (std::size_t c = 0; c < n; ++c)
       level[c] = std::max(k[c], k_level);
     r.k = k_equation.relax(k, alpha, level, scale);
@@ -129,6 +132,8 @@ namespace servodrift::flow
         epsilon_equation.diagonal[c] += C2 * destruction_factor[c] * rho * ratio * V;
         epsilon_equation.b[c] += (C1 * ratio * production[c] + epsilon_source[c]) * V;
       }
+    if (time)
+      add_time_term(epsilon_equation, *time, 1);
     constrain_epsilon(epsilon_equation);
     for (std::size_t c = 0; c < n; ++c)
       level[c] = std::max(epsilon[c], epsilon_level);
@@ -171,6 +176,8 @@ namespace servodrift::flow
   {
     scale_two_equation_fields(s, k, k_b, epsilon, epsilon_b, s * std::sqrt(s));
   }
+
+  std::vector<std::vector<double>> KEpsilonModel::transported_fields() const { return {k, epsilon}; }
 
   std::vector<std::vector<double> *> KEpsilonModel::accelerated_fields() { return {&k, &epsilon, &mu_t}; }
 

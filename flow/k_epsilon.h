@@ -25,7 +25,10 @@ namespace servodrift::flow
     KEpsilonModel(const FvMesh &mesh, const FluidProperties &fluid, const BoundaryConditions &boundaries,
                   const FlowSolverParameters &settings, const MatrixPattern &pattern);
     bool turbulent() const override { return true; }
-    TurbulenceResiduals correct(const FlowState &state, const std::vector<double> &convecting_flux) override;
+    TurbulenceResiduals correct(const FlowState &state, const std::vector<double> &convecting_flux,
+                                const TimeLevel *time = nullptr) override;
+    /// k and epsilon
+    std::vector<std::vector<double>> transported_fields() const override;
     void store(FlowFields &fields) const override;
     void restore(const FlowFields &fields) override;
     void scale_pressure_level(double s) override;

@@ -99,7 +99,8 @@ namespace servodrift::flow
       }
   }
 
-  TurbulenceResiduals KOmegaSST::correct(const FlowState &s, const std::vector<double> &convecting_flux)
+  TurbulenceResiduals KOmegaSST::correct(const FlowState &s, const std::vector<double> &convecting_flux,
+                                         const TimeLevel *time)
   {
     const std::size_t n = mesh.n_cells(), nf = mesh.n_faces();
     const double rho = fluid.density, mu = fluid.viscosity, alpha = settings.turbulence_relaxation;
@@ -172,6 +173,8 @@ namespace servodrift::flow
         k_equation.diagonal[c] += beta_star * rho * w * V;
         k_equation.b[c] += production * V;
       }
+    if (time)
+      add_time_term(k_equation, *time, 0);
     for (std::size_t c = 0; c < n; ++c)
       level[c] = std::max(k[c], k_level);
     r.k = k_equation.relax(k, alpha, level, scale);
@@ -193,6 +196,8 @@ namespace servodrift::flow
         else
           omega_equation.diagonal[c] -= cross / w * V;
       }
+    if (time)
+      add_time_term(omega_equation, *time, 1);
     // the wall cells: omega = 6 nu/(beta_1 y^2), their rows a_P (omega - that)
     {
       const double nu = mu / rho;
@@ -255,6 +260,8 @@ namespace servodrift::flow
 
   /// velocities by sqrt(s): omega, a rate U/L, by sqrt(s)
   void KOmegaSST::scale_pressure_level(double s) { scale_two_equation_fields(s, k, k_b, omega, omega_b, std::sqrt(s)); }
+
+  std::vector<std::vector<double>> KOmegaSST::transported_fields() const { return {k, omega}; }
 
   std::vector<std::vector<double> *> KOmegaSST::accelerated_fields() { return {&k, &omega, &mu_t}; }
 

@@ -29,7 +29,10 @@ namespace servodrift::flow
               const FlowSolverParameters &settings, const MatrixPattern &pattern);
     bool turbulent() const override { return true; }
     /// The residuals are those of k and omega (reported as k and epsilon).
-    TurbulenceResiduals correct(const FlowState &state, const std::vector<double> &convecting_flux) override;
+    TurbulenceResiduals correct(const FlowState &state, const std::vector<double> &convecting_flux,
+                                const TimeLevel *time = nullptr) override;
+    /// k and omega
+    std::vector<std::vector<double>> transported_fields() const override;
     void store(FlowFields &fields) const override;
     void restore(const FlowFields &fields) override;
     void scale_pressure_level(double s) override;

@@ -85,7 +85,7 @@ namespace servodrift::flow
     Residuals r;
     if (turbulence->turbulent())
       {
-        const TurbulenceResiduals t = turbulence->correct(state, mass_flux());
+        const TurbulenceResiduals t = turbulence->correct(state, mass_flux(), previous.dt > 0 ? &previous : nullptr);
         r.k = t.k, r.epsilon = t.epsilon;
       }
     const double scale = std::max(m.scale, vanishing);

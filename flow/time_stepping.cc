@@ -20,6 +20,7 @@ namespace servodrift::flow
   {
     const std::size_t n = mesh.n_cells();
     time_term.diagonal.resize(n);
+    previous.storage_rate.resize(n);
     for (auto &source : time_term.source)
       source.resize(n);
     for (std::size_t c = 0; c < n; ++c)
@@ -29,6 +30,7 @@ namespace servodrift::flow
         // mass the pressure correction does not see (a liquid cell has no storage) into momentum
         // (RV-1's steady cavitating null diverged within five steps)
         const double per_step = fluid.density * cavitation.mixture_ratio(c) * mesh.cell_volume[c] / previous.dt;
+        previous.storage_rate[c] = per_step;
         time_term.diagonal[c] = per_step * previous.new_weight();
         time_term.source[0][c] = per_step * previous.old_velocity(0, c);
         time_term.source[1][c] = per_step * previous.old_velocity(1, c);
@@ -39,8 +41,6 @@ namespace servodrift::flow
   SolveReport SimplecSolver::advance(double dt, unsigned int max_iterations, double tolerance)
   {
     auto &d = *impl;
-    if (d.turbulence->turbulent())
-      throw std::invalid_argument("flow: " + d.mesh.source + ": time stepping is laminar only");
     if (!(dt > 0) || !std::isfinite(dt) || max_iterations == 0)
       throw std::invalid_argument("flow: time step " + format_number(dt) + " s must be > 0, with at least one iteration");
     // BDF2 from the second step of a run at constant dt (the fields unchanged in between: every
@@ -51,6 +51,7 @@ namespace servodrift::flow
       d.previous.before = {};
     d.previous.dt = d.time_step = dt;
     d.previous.last.u = d.state.u, d.previous.last.v = d.state.v, d.previous.last.flux = d.state.flux;
+    d.previous.last.turbulence = d.turbulence->transported_fields();
     d.previous.last.mixture.resize(d.mesh.n_cells());
     for (std::size_t c = 0; c < d.mesh.n_cells(); ++c)
       d.previous.last.mixture[c] = d.cavitation.mixture_ratio(c);

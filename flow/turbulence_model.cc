@@ -43,6 +43,15 @@ namespace servodrift::flow
     update_face_viscosity();
   }
 
+  void TurbulenceModel::add_time_term(FvMatrix &equation, const TimeLevel &time, std::size_t field)
+  {
+    for (std::size_t c = 0; c < equation.diagonal.size(); ++c)
+      {
+        equation.diagonal[c] += time.storage_rate[c] * time.new_weight();
+        equation.b[c] += time.storage_rate[c] * time.old_turbulence(field, c);
+      }
+  }
+
   void TurbulenceModel::update_face_viscosity()
   {
     mesh.for_each_face([&](std::size_t f, unsigned int, unsigned int) { mu_face[f] = fluid.viscosity + mesh.interpolate(f, mu_t); },

@@ -46,8 +46,13 @@ namespace servodrift::flow
 
     virtual bool turbulent() const = 0;
     /// One step of the model's equations with the velocities and fluxes of this iteration (F the
-    /// convecting mass flux), then the new mu_t and face viscosities; the scaled residuals.
-    virtual TurbulenceResiduals correct(const FlowState &state, const std::vector<double> &convecting_flux) = 0;
+    /// convecting mass flux), then the new mu_t and face viscosities; the scaled residuals. With
+    /// `time' (SimplecSolver::advance), each transported field phi's equation holds rho_m dphi/dt.
+    virtual TurbulenceResiduals correct(const FlowState &state, const std::vector<double> &convecting_flux,
+                                        const TimeLevel *time = nullptr) = 0;
+    /// The fields the model transports (k and epsilon or omega; none if laminar), for the old time
+    /// levels of a time step.
+    virtual std::vector<std::vector<double>> transported_fields() const = 0;
 
     /// mu_t per cell [Pa*s] (zeros if laminar).
     const std::vector<double> &viscosity() const { return mu_t; }
@@ -73,6 +78,10 @@ namespace servodrift::flow
     virtual std::vector<std::pair<std::string, const std::vector<double> *>> output_fields() const = 0;
 
   protected:
+    /// The time term of transported field number `field' (transported_fields' order) in its
+    /// equation, advective as the momentum equations' (momentum_equation.h): rho_m V/dt (new_weight
+    /// phi - the old levels' weighted phi), the first part on the diagonal, the rest in b.
+    static void add_time_term(FvMatrix &equation, const TimeLevel &time, std::size_t field);
     /// mu_face from mu_t: linear interpolation inside, the cell's at inflows, outflows, the axis and
     /// symmetry planes, none at walls.
     void update_face_viscosity();
@@ -100,7 +109,8 @@ namespace servodrift::flow
   public:
     LaminarFlow(const FvMesh &mesh, const FluidProperties &fluid, const BoundaryConditions &boundaries);
     bool turbulent() const override { return false; }
-    TurbulenceResiduals correct(const FlowState &, const std::vector<double> &) override { return {}; }
+    TurbulenceResiduals correct(const FlowState &, const std::vector<double> &, const TimeLevel *) override { return {}; }
+    std::vector<std::vector<double>> transported_fields() const override { return {}; }
     void store(FlowFields &fields) const override { fields.turbulent = false; }
     void restore(const FlowFields &) override {}
     void scale_pressure_level(double) override {}
