@@ -77,7 +77,7 @@ namespace servodrift::flow
     /// Inlet total pressure dp above the outlet's static pressure [Pa], > 0 (InputError otherwise).
     /// Throws NotConverged (fields left as they are) or std::runtime_error (diverged).
     PilotFieldResult solve(double pressure_difference);
-    /// Time stepping (laminar; SimplecSolver::advance): one step of dt [s] at pressure difference dp
+    /// Time stepping (SimplecSolver::advance): one step of dt [s] at pressure difference dp
     /// from the current fields (scaled to dp first if they are at another level), at most
     /// max_iterations to `tolerance'; what the new fields give, iterations those of the step.
     PilotFieldResult advance(double pressure_difference, double dt, unsigned int max_iterations, double tolerance);

@@ -123,10 +123,18 @@ namespace servodrift::flow
     /// mean of the two pressure levels (half the step, in the logarithm), or, where there is no
     /// such state at this gap or it is the same pressure level, from rest (laminar start-up) with
     /// half the steps of `Field continuation ratio' (in the logarithm), so that the retry does not
-    /// repeat the path that failed.
-    /// The second failure propagates.
+    /// repeat the path that failed. A laminar or k-epsilon case's second failure propagates; SST
+    /// and Launder-Sharma go on to solve_from_k_epsilon.
     PilotFieldResult solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
                                       bool started_elsewhere);
+    /// The last rung of the retry, for the models less robust than the two-layer k-epsilon (SST,
+    /// Launder-Sharma): the case solved with the two-layer k-epsilon (on its own retry path, from the
+    /// chain's last fields if they are this model's), and model t started from that solution at the
+    /// same pressure level, as users of CFD codes start SST from a converged k-epsilon field. SST's
+    /// cavitating orifice at 20.6 MPa diverges on its own as the cavity grows by thousands of cells
+    /// in a few iterations; from k-epsilon's cavity it converges (doc/validation.md, "Robustness").
+    /// Its iterations include k-epsilon's; a failure of either propagates.
+    PilotFieldResult solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
     /// A laminar case whose steady iteration stalled (`why'): its time average into `record'
     /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too or its spread is
     /// beyond `Field time average spread limit' (the average is then recorded, not used).

@@ -168,8 +168,8 @@ namespace servodrift::flow
       }
     catch (const std::runtime_error &e) // NotConverged or diverged: flagged, the reduced order stands in
       {
-        // a laminar case that stalls may have no steady solution: its time average stands for it
-        if (t == Turbulence::laminar && valve.pilot.field_time_average && dynamic_cast<const NotConverged *>(&e) &&
+        // a case that stalls may have no steady solution: its time average stands for it
+        if (valve.pilot.field_time_average && dynamic_cast<const NotConverged *>(&e) &&
             time_average_of(*slot, dp, where, e.what(), record))
           {
             record[flag] = flags::time_averaged;
@@ -282,8 +282,28 @@ namespace servodrift::flow
         catch (const std::runtime_error &)
           {
             slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
-            throw;
+            if (t == Turbulence::laminar || t == Turbulence::k_epsilon)
+              throw;
           }
+        return solve_from_k_epsilon(slot, t, h, dp);
       }
+  }
+
+  PilotFieldResult Chain::solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp)
+  {
+    PilotFieldCase c = conditions;
+    c.turbulence = Turbulence::k_epsilon;
+    auto k_epsilon = std::make_unique<PilotField>(valve, kind, c, h);
+    k_epsilon->set_failure_output(failure_output);
+    if (last && last_model == t)
+      k_epsilon->set_fields(*last);
+    const PilotFieldResult start = solve_with_retry(k_epsilon, Turbulence::k_epsilon, h, dp, true);
+    c.turbulence = t;
+    slot = std::make_unique<PilotField>(valve, kind, c, h);
+    slot->set_failure_output(failure_output);
+    slot->set_fields(k_epsilon->fields());
+    PilotFieldResult r = slot->solve(dp);
+    r.iterations += start.iterations + start.coarse_mesh_iterations;
+    return r;
   }
 } // namespace servodrift::flow

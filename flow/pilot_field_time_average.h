@@ -1,7 +1,8 @@
 #pragma once
 // The time average of a field-level pilot case without a steady solution (issue 28, item 6; doc/method.md,
-// "Time stepping"): a laminar case whose steady iteration does not converge because its flow does not
-// settle (the jet through a wide gap oscillates) is marched in time from where the iteration stopped,
+// "Time stepping"): a case whose steady iteration does not converge because its flow does not settle
+// (the laminar jet through a wide gap oscillates; with SST a hot nozzle's cavity cycles) is marched
+// in time (URANS if turbulent) from where the iteration stopped,
 // with the time step of a Courant number, and reported by the mean of its results over the last part
 // of the run, with their standard deviations as its spread.
 #include "common/parameters/pilot_stage.h"
@@ -24,7 +25,7 @@ namespace servodrift::flow
 
   /// Marches `field' at pressure difference dp from its current fields (`Field time steps' steps at
   /// `Field time step Courant number'), averaging the last `Field averaged fraction' of them. Throws
-  /// std::runtime_error if a step diverges, std::invalid_argument for a turbulent case.
+  /// std::runtime_error if a step diverges, std::invalid_argument if nothing flows.
   /// `each_step', if set, sees every step's results (a progress report).
   TimeAverage time_average(PilotField &field, double pressure_difference, const PilotStageParameters &settings,
                            const std::function<void(unsigned int step, double time, const PilotFieldResult &)> &each_step = {});

@@ -75,8 +75,9 @@ namespace servodrift
                       "suction ring at the land's inner edge falls far below zero absolute at RV-1's "
                       "pressures (C12). [-]");
     prm.declare_entry("Field time average", "true", Patterns::Bool(),
-                      "Field level: a laminar case whose steady iteration does not converge (a jet that "
-                      "oscillates has no steady solution) is marched in time from where it stopped (BDF2) "
+                      "Field level: a case whose steady iteration does not converge (a jet or a cavity that "
+                      "oscillates has no steady solution) is marched in time from where it stopped (BDF2, "
+                      "URANS if turbulent) "
                       "and reported by its time average, flagged 5, its spread in "
                       "flow/<geometry>_time_averages.csv. false: flagged 2, the reduced-order value "
                       "stands in. [-]");

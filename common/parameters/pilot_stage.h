@@ -33,7 +33,7 @@ namespace servodrift
     double field_chamber_length;    ///< orifice downstream chamber length / bore radius [1]
     double field_outlet_radius;     ///< nozzle-flapper outlet radius / land radius [1]
     bool field_cavitation;          ///< field cases model cavitation at the vapour pressure
-    bool field_time_average;        ///< a laminar case without a steady solution is reported by its time average
+    bool field_time_average;        ///< a case without a steady solution is reported by its time average
     double field_time_step_courant; ///< Courant number of the time step of a time average [1]
     unsigned int field_time_steps;  ///< time steps of a time average
     double field_averaged_fraction; ///< the last fraction of them that is averaged [1]
