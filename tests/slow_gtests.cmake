@@ -4,6 +4,7 @@ foreach(name PilotFieldStage.OrificePathOverTemperatureKeepsTheAnswer Calibratio
              PilotField.MeshConvergence PilotField.FixedOrificeFollowsLichtarowiczWithKEpsilon
              PilotField.CaughtCyclesLeaveTheAnswerUnchanged PilotField.GridSequencingKeepsTheFineMeshAnswer
              PilotFieldStage.StalledLaminarCaseIsReportedByItsTimeAverage
+             PilotFieldChain.SSTOrificeGoesOnFromKEpsilonWhereItDivergesAlone
              TurbulenceValidation/BackwardFacingStep.ReattachmentLength/TwoLayer
              TurbulenceValidation/BackwardFacingStep.ReattachmentLength/SST
              TurbulenceValidation/ImpingingJet.WallJetProfiles/TwoLayer
