@@ -1,8 +1,9 @@
 // Robustness of single field-level pilot cases started from rest (issue 28, item 6): the cases the
 // issue lists as failing, each solved alone from rest on RV-1 (40 degC unless stated; no continuation from a
 // neighbouring case) on the flow stage's path (flow/pilot_field_cases.h's Chain: the case from rest
-// with its pressure continuation, and once more with half the continuation steps if that fails),
-// with every flow model. Prints per case the outcome (converged, or flagged 2 with the solver's
+// with its pressure continuation, once more with half the continuation steps if that fails, SST and
+// Launder-Sharma then from the two-layer k-epsilon's solution, and a case that still stalls marched in
+// time for its time average), with every flow model. Prints per case the outcome (converged, or flagged 2 with the solver's
 // reason on stderr), the iterations, the wall time, C_d and the flapper force. Not a test (minutes).
 //   OMP_THREAD_LIMIT=1 build/bench/bench_cold_start [case numbers, default all, e.g. 1,4,7] [parameter=value ...]
 // (extra arguments are `--set' entries, e.g. 'Flow solver/Report interval=100' for the residual history)
