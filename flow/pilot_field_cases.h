@@ -137,7 +137,8 @@ namespace servodrift::flow
     PilotFieldResult solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
     /// A laminar case whose steady iteration stalled (`why'): its time average into `record'
     /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too or its spread is
-    /// beyond `Field time average spread limit' (the average is then recorded, not used).
+    /// beyond `Field time average spread limit' (the average is then recorded, not used). A used
+    /// average's mean fields go to the case's VTU.
     bool time_average_of(PilotField &field, double dp, const std::string &where, const std::string &why,
                          std::vector<double> &record);
 
@@ -150,7 +151,9 @@ namespace servodrift::flow
     std::optional<FlowFields> last;
     Turbulence last_model = Turbulence::laminar;
     double last_dp = 0; ///< the pressure level of `last'
-    std::string failure_output; ///< the VTU of the case being solved, if it fails
+    /// the VTU of the case being solved, if any (`Output/Flow fields'): its last iterate if it
+    /// fails, its mean fields if its time average stands for it
+    std::string failure_output;
   };
 
   /// flow/<geometry>_cases<variant>.csv and the .pvd collection of the VTU files written (rank 0).

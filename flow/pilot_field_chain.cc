@@ -199,42 +199,48 @@ namespace servodrift::flow
                               std::vector<double> &record)
   {
     std::cerr << "servodrift: note: " << where << ": " << why << "; marching it in time for its time average\n";
+    TimeAverage a;
     try
       {
         const unsigned int interval = valve.flow_solver.report_interval; // `Report interval': every this many steps
-        const TimeAverage a = time_average(field, dp, valve.pilot, [&](unsigned int step, double time, const PilotFieldResult &r) {
+        a = time_average(field, dp, valve.pilot, [&](unsigned int step, double time, const PilotFieldResult &r) {
           if (interval > 0 && step % interval == 0)
             std::fprintf(stderr, "  time step %u, t %.4g s: C_d %.6f, flapper force %.6f N, %u iterations%s\n", step, time,
                          r.discharge_coefficient, r.flapper_force, r.iterations, r.cavitating ? ", cavitating" : "");
         });
-        record[averaged_discharge_coefficient] = a.mean.discharge_coefficient;
-        record[discharge_coefficient_spread] = a.discharge_coefficient_spread;
-        record[averaged_flapper_force] = a.mean.flapper_force;
-        record[flapper_force_spread] = a.flapper_force_spread;
-        record[averaged_time] = a.averaged_time;
-        record[time_step] = a.time_step;
-        // a spread beyond the limit: the mean is not a value the tables can use (a cavity collapsing
-        // against the incompressible liquid puts spikes on the force, doc/validation.md)
-        const double limit = valve.pilot.field_time_average_spread_limit;
-        const double C_d_spread = a.discharge_coefficient_spread / std::abs(a.mean.discharge_coefficient);
-        const double force_spread = kind == PilotGeometry::nozzle_flapper ? a.flapper_force_spread / std::abs(a.mean.flapper_force) : 0.0;
-        if (!(C_d_spread <= limit && force_spread <= limit))
-          {
-            std::cerr << "servodrift: warning: " << where << ": its time average spreads by " << format_number(100 * C_d_spread)
-                      << " % in C_d and " << format_number(100 * force_spread)
-                      << " % in the flapper force (standard deviations), beyond `Pilot stage/Field time average spread "
-                         "limit' ("
-                      << format_number(100 * limit) << " %): listed in flow/*_time_averages.csv, not used\n";
-            return false;
-          }
-        record_result(record, a.mean);
-        return true;
       }
     catch (const std::exception &e) // diverged, or no flow to set a time step by
       {
         std::cerr << "servodrift: warning: " << where << ": its time average failed too: " << e.what() << "\n";
         return false;
       }
+    record[averaged_discharge_coefficient] = a.mean.discharge_coefficient;
+    record[discharge_coefficient_spread] = a.discharge_coefficient_spread;
+    record[averaged_flapper_force] = a.mean.flapper_force;
+    record[flapper_force_spread] = a.flapper_force_spread;
+    record[averaged_time] = a.averaged_time;
+    record[time_step] = a.time_step;
+    // a spread beyond the limit: the mean is not a value the tables can use (a cavity collapsing
+    // against the incompressible liquid puts spikes on the force, doc/validation.md)
+    const double limit = valve.pilot.field_time_average_spread_limit;
+    const double C_d_spread = a.discharge_coefficient_spread / std::abs(a.mean.discharge_coefficient);
+    const double force_spread = kind == PilotGeometry::nozzle_flapper ? a.flapper_force_spread / std::abs(a.mean.flapper_force) : 0.0;
+    if (!(C_d_spread <= limit && force_spread <= limit))
+      {
+        std::cerr << "servodrift: warning: " << where << ": its time average spreads by " << format_number(100 * C_d_spread)
+                  << " % in C_d and " << format_number(100 * force_spread)
+                  << " % in the flapper force (standard deviations), beyond `Pilot stage/Field time average spread "
+                     "limit' ("
+                  << format_number(100 * limit) << " %): listed in flow/*_time_averages.csv, not used\n";
+        return false;
+      }
+    record_result(record, a.mean);
+    if (!failure_output.empty()) // the case's VTU (`Output/Flow fields'): the mean flow
+      {
+        field.set_fields(a.mean_fields);
+        field.write_vtu(failure_output);
+      }
+    return true;
   }
 
   void Chain::resume(const State &s)

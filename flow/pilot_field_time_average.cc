@@ -27,6 +27,37 @@ namespace servodrift::flow
       }
       double standard_deviation() const { return count > 1 ? std::sqrt(m2 / count) : 0.0; }
     };
+
+    /// Running means of the fields of a case, componentwise (the same update as RunningMoments').
+    struct RunningFields
+    {
+      double count = 0;
+      FlowFields mean;
+      static std::vector<std::vector<double> *> averaged(FlowFields &f)
+      {
+        return {&f.u, &f.v, &f.p, &f.flux, &f.k, &f.epsilon, &f.turbulent_viscosity, &f.liquid_fraction};
+      }
+      void add(FlowFields f)
+      {
+        count += 1;
+        if (count == 1)
+          {
+            mean = std::move(f);
+            return;
+          }
+        const auto to = averaged(mean), from = averaged(f);
+        for (std::size_t i = 0; i < to.size(); ++i)
+          for (std::size_t j = 0; j < to[i]->size(); ++j)
+            (*to[i])[j] += ((*from[i])[j] - (*to[i])[j]) / count;
+      }
+      FlowFields result() const
+      {
+        FlowFields f = mean;
+        for (std::size_t c = 0; c < f.cavitating.size(); ++c)
+          f.cavitating[c] = f.liquid_fraction[c] < 1;
+        return f;
+      }
+    };
   } // namespace
 
   TimeAverage time_average(PilotField &field, double dp, const PilotStageParameters &settings,
@@ -38,6 +69,7 @@ namespace servodrift::flow
     const unsigned int averaged = std::max(
       2u, std::min(steps, static_cast<unsigned int>(std::lround(settings.field_averaged_fraction * steps))));
     RunningMoments Q, C_d, Re, force, land, jet, bore;
+    RunningFields fields;
     PilotFieldResult &m = a.mean;
     for (unsigned int step = 0; step < steps; ++step)
       {
@@ -49,6 +81,7 @@ namespace servodrift::flow
           continue;
         Q.add(r.flow_rate), C_d.add(r.discharge_coefficient), Re.add(r.reynolds_number);
         force.add(r.flapper_force), land.add(r.land_force), jet.add(r.jet_force), bore.add(r.bore_pressure);
+        fields.add(field.fields());
         const bool first = Q.count == 1;
         m.minimum_pressure = first ? r.minimum_pressure : std::min(m.minimum_pressure, r.minimum_pressure);
         m.minimum_absolute_pressure =
@@ -62,6 +95,7 @@ namespace servodrift::flow
     a.discharge_coefficient_spread = C_d.standard_deviation();
     a.flapper_force_spread = force.standard_deviation();
     a.averaged_time = averaged * a.time_step;
+    a.mean_fields = fields.result();
     return a;
   }
 } // namespace servodrift::flow

@@ -21,6 +21,10 @@ namespace servodrift::flow
     double flapper_force_spread = 0;         ///< [N]
     double time_step = 0;                    ///< [s]
     double averaged_time = 0;                ///< [s]
+    /// The cell and face fields averaged over the averaged time (velocities, pressure, fluxes, the
+    /// turbulence model's fields, the liquid fraction; a cell cavitates if its mean liquid fraction is
+    /// below 1), for the VTU of the mean flow.
+    FlowFields mean_fields;
   };
 
   /// Marches `field' at pressure difference dp from its current fields (`Field time steps' steps at
