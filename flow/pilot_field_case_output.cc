@@ -68,7 +68,7 @@ namespace servodrift::flow
     {
       CsvDocument doc = case_document(
         valve, name + "_time_averages",
-        "field-level laminar cases whose steady iteration stalled, marched in time (BDF2): the mean and the standard "
+        "field-level cases whose steady iteration stalled, marched in time (BDF2; URANS if turbulent): the mean and the standard "
         "deviation over the averaged time (Pilot stage/Field time steps, Field averaged fraction, Field time step "
         "Courant number); flag 5: the table uses the mean, 2: its spread is beyond Field time average spread limit "
         "and the reduced-order value stands in");

@@ -262,9 +262,12 @@ namespace servodrift::flow
       }
     catch (const std::runtime_error &)
       {
-        const bool own_state = last && last_model == t && !started_elsewhere && last_dp != dp;
-        PilotFieldCase c = conditions;
-        c.turbulence = t;
+      }
+    const bool own_state = last && last_model == t && !started_elsewhere && last_dp != dp;
+    PilotFieldCase c = conditions;
+    c.turbulence = t;
+    try
+      {
         if (own_state)
           {
             slot->set_fields(*last);
@@ -279,20 +282,17 @@ namespace servodrift::flow
         slot->set_failure_output(failure_output);
         // the smaller steps for this solve only: the chain's next cases take the valve's
         slot->set_continuation_ratio(std::sqrt(valve.pilot.field_continuation_ratio));
-        try
-          {
-            PilotFieldResult r = slot->solve(dp);
-            slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
-            return r;
-          }
-        catch (const std::runtime_error &)
-          {
-            slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
-            if (t == Turbulence::laminar || t == Turbulence::k_epsilon)
-              throw;
-          }
-        return solve_from_k_epsilon(slot, t, h, dp);
+        PilotFieldResult r = slot->solve(dp);
+        slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
+        return r;
       }
+    catch (const std::runtime_error &)
+      {
+        slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
+        if (t == Turbulence::laminar || t == Turbulence::k_epsilon)
+          throw;
+      }
+    return solve_from_k_epsilon(slot, t, h, dp);
   }
 
   PilotFieldResult Chain::solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp)
