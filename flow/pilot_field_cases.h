@@ -124,7 +124,8 @@ namespace servodrift::flow
     /// such state at this gap or it is the same pressure level, from rest (laminar start-up) with
     /// half the steps of `Field continuation ratio' (in the logarithm), so that the retry does not
     /// repeat the path that failed. A laminar or k-epsilon case's second failure propagates; SST
-    /// and Launder-Sharma go on to solve_from_k_epsilon.
+    /// and Launder-Sharma go on to solve_from_k_epsilon. Where that diverges after a retry that
+    /// stalled, the retry's stall propagates with its state in `slot', for the time average.
     PilotFieldResult solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
                                       bool started_elsewhere);
     /// The last rung of the retry, for the models less robust than the two-layer k-epsilon (SST,

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <iostream>
 #include <stdexcept>
 
@@ -266,6 +267,8 @@ namespace servodrift::flow
     const bool own_state = last && last_model == t && !started_elsewhere && last_dp != dp;
     PilotFieldCase c = conditions;
     c.turbulence = t;
+    bool retry_stalled = false;
+    std::exception_ptr retry_failure;
     try
       {
         if (own_state)
@@ -286,13 +289,35 @@ namespace servodrift::flow
         slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
         return r;
       }
-    catch (const std::runtime_error &)
+    catch (const std::runtime_error &e)
       {
         slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
         if (t == Turbulence::laminar || t == Turbulence::k_epsilon)
           throw;
+        retry_stalled = dynamic_cast<const NotConverged *>(&e) != nullptr;
+        retry_failure = std::current_exception();
       }
-    return solve_from_k_epsilon(slot, t, h, dp);
+    // the retry's state stays for a time average if the start from k-epsilon fails
+    std::unique_ptr<PilotField> retried = std::move(slot);
+    try
+      {
+        return solve_from_k_epsilon(slot, t, h, dp);
+      }
+    catch (const NotConverged &)
+      {
+        if (!slot)
+          slot = std::move(retried);
+        throw; // stalled from k-epsilon's solution: that state is marched
+      }
+    catch (const std::runtime_error &)
+      {
+        // diverged (or k-epsilon failed): a stalled retry's state is marched rather than nothing
+        if (!slot || retry_stalled)
+          slot = std::move(retried);
+        if (retry_stalled)
+          std::rethrow_exception(retry_failure);
+        throw;
+      }
   }
 
   PilotFieldResult Chain::solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp)
