@@ -136,7 +136,7 @@ namespace servodrift::flow
     /// in a few iterations; from k-epsilon's cavity it converges (doc/validation.md, "Robustness").
     /// Its iterations include k-epsilon's; a failure of either propagates.
     PilotFieldResult solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
-    /// A laminar case whose steady iteration stalled (`why'): its time average into `record'
+    /// A case whose steady iteration stalled (`why'): its time average into `record'
     /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too or its spread is
     /// beyond `Field time average spread limit' (the average is then recorded, not used). A used
     /// average's mean fields go to the case's VTU.
