@@ -31,6 +31,19 @@ namespace servodrift::flow::domains
     return FvMesh(m, geometry, "rectangle.geo");
   }
 
+  /// A flow model's name in a parametrised test's name (letters only, as gtest asks).
+  inline std::string test_name(FlowSolverParameters::Turbulence t)
+  {
+    switch (t)
+      {
+        case FlowSolverParameters::Turbulence::laminar: return "Laminar";
+        case FlowSolverParameters::Turbulence::k_epsilon: return "TwoLayer";
+        case FlowSolverParameters::Turbulence::k_epsilon_launder_sharma: return "LaunderSharma";
+        case FlowSolverParameters::Turbulence::k_omega_sst: return "SST";
+      }
+    return "Unknown";
+  }
+
   /// The built-in valve's flow-solver settings, to `tolerance'.
   inline FlowSolverParameters settings(double tolerance = 1e-8)
   {

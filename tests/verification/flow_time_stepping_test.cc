@@ -191,14 +191,7 @@ namespace servodrift::flow
                            ::testing::Values(FlowSolverParameters::Turbulence::k_epsilon,
                                              FlowSolverParameters::Turbulence::k_epsilon_launder_sharma,
                                              FlowSolverParameters::Turbulence::k_omega_sst),
-                           [](const auto &info) {
-                             switch (info.param)
-                               {
-                                 case FlowSolverParameters::Turbulence::k_epsilon: return std::string("TwoLayer");
-                                 case FlowSolverParameters::Turbulence::k_epsilon_launder_sharma: return std::string("LaunderSharma");
-                                 default: return std::string("SST");
-                               }
-                           });
+                           [](const auto &info) { return test_name(info.param); });
 
   // The Courant time step: after the steady solve, dt for Courant number 1 against the largest
   // cell's sum|F|/(2 rho V), here a cell on the axis of the developed flow: 2 U/dx (in and out).

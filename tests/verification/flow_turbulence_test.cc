@@ -122,8 +122,7 @@ namespace servodrift::flow
                                              PipeCase{FlowSolverParameters::Turbulence::k_epsilon_launder_sharma, 60, 120, 40},
                                              PipeCase{FlowSolverParameters::Turbulence::k_omega_sst, 120, 120, 80}),
                            [](const auto &info) {
-                             const std::string label = model_label(info.param.model);
-                             return label == "two-layer" ? "TwoLayer" : label == "SST" ? "SST" : "LaunderSharma";
+                             return test_name(info.param.model);
                            });
 } // namespace servodrift::flow
 

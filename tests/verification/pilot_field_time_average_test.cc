@@ -16,6 +16,7 @@
 #include "common/table.h"
 #include "flow/pilot_field_cases.h"
 #include "flow/pilot_field_time_average.h"
+#include "tests/verification/flow_test_domains.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -171,12 +172,5 @@ namespace servodrift::flow
                            ::testing::Values(FlowSolverParameters::Turbulence::laminar,
                                              FlowSolverParameters::Turbulence::k_epsilon,
                                              FlowSolverParameters::Turbulence::k_omega_sst),
-                           [](const auto &info) {
-                             switch (info.param)
-                               {
-                                 case FlowSolverParameters::Turbulence::laminar: return std::string("Laminar");
-                                 case FlowSolverParameters::Turbulence::k_epsilon: return std::string("TwoLayer");
-                                 default: return std::string("SST");
-                               }
-                           });
+                           [](const auto &info) { return domains::test_name(info.param); });
 } // namespace servodrift::flow
