@@ -203,11 +203,18 @@ namespace servodrift::flow
     TimeAverage a;
     try
       {
-        const unsigned int interval = valve.flow_solver.report_interval; // `Report interval': every this many steps
+        // `Report interval': every this many steps; otherwise a line at every tenth of the run
+        // (a time average takes minutes), unless `Output/Progress' is none
+        const unsigned int interval = valve.flow_solver.report_interval;
+        const unsigned int steps = valve.pilot.field_time_steps;
+        const bool tenths = interval == 0 && valve.output.progress != OutputParameters::Progress::none;
         a = time_average(field, dp, valve.pilot, [&](unsigned int step, double time, const PilotFieldResult &r) {
           if (interval > 0 && step % interval == 0)
             std::fprintf(stderr, "  time step %u, t %.4g s: C_d %.6f, flapper force %.6f N, %u iterations%s\n", step, time,
                          r.discharge_coefficient, r.flapper_force, r.iterations, r.cavitating ? ", cavitating" : "");
+          else if (tenths && steps >= 10 && step % (steps / 10) == 0)
+            std::fprintf(stderr, "servodrift: %s: time step %u of %u (t %.3g s), C_d %.4f\n", where.c_str(), step, steps,
+                         time, r.discharge_coefficient);
         });
       }
     catch (const std::exception &e) // diverged, or no flow to set a time step by
