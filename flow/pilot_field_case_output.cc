@@ -69,13 +69,16 @@ namespace servodrift::flow
       CsvDocument doc = case_document(
         valve, name + "_time_averages",
         "field-level cases whose steady iteration stalled, marched in time (BDF2; URANS if turbulent): the mean and the standard "
-        "deviation over the averaged time (Pilot stage/Field time steps, Field averaged fraction, Field time step "
-        "Courant number); flag 5: the table uses the mean, 2: its spread is beyond Field time average spread limit "
-        "and the reduced-order value stands in");
+        "deviation (spread) over the averaged time and the standard error of the mean (uncertainty, batch means) "
+        "(Pilot stage/Field time steps, Field averaged fraction, Field time step Courant number); flag 5: the table "
+        "uses the mean, 2: its uncertainty is beyond Field time average uncertainty limit and the reduced-order "
+        "value stands in");
       doc.columns.insert(doc.columns.end(), {"discharge_coefficient[1]",
                      "discharge_coefficient_spread[1]",
+                     "discharge_coefficient_uncertainty[1]",
                      "flapper_force[N]",
                      "flapper_force_spread[N]",
+                     "flapper_force_uncertainty[N]",
                      "time_step[s]",
                      "averaged_time[s]",
                      "flag[1]"});
@@ -83,7 +86,8 @@ namespace servodrift::flow
         if (r[averaged_time] > 0)
           doc.rows.push_back({format_cell(r[temperature]), format_cell(r[gap]), format_cell(r[pressure_difference]),
                               format_cell(r[averaged_discharge_coefficient]), format_cell(r[discharge_coefficient_spread]),
-                              format_cell(r[averaged_flapper_force]), format_cell(r[flapper_force_spread]),
+                              format_cell(r[discharge_coefficient_uncertainty]), format_cell(r[averaged_flapper_force]),
+                              format_cell(r[flapper_force_spread]), format_cell(r[flapper_force_uncertainty]),
                               format_cell(r[time_step]), format_cell(r[averaged_time]), format_cell(r[flag])});
       write_file_atomically(flow_directory(valve) + "/" + name + "_time_averages" + variant + ".csv", doc.text());
     }

@@ -44,12 +44,15 @@ namespace servodrift::flow
       reduced_discharge_coefficient,
       reduced_flapper_force,
       wall_time,
-      // a time average (flag 5, or flag 2 where its spread is beyond the limit): the means and
-      // standard deviations over the averaged time, that time and the time step (0: none)
+      // a time average (flag 5, or flag 2 where the uncertainty of its mean is beyond the limit):
+      // the means, standard deviations and standard errors of the means over the averaged time,
+      // that time and the time step (0: none)
       averaged_discharge_coefficient,
       discharge_coefficient_spread,
+      discharge_coefficient_uncertainty,
       averaged_flapper_force,
       flapper_force_spread,
+      flapper_force_uncertainty,
       averaged_time,
       time_step,
       record_length
@@ -137,8 +140,9 @@ namespace servodrift::flow
     /// Its iterations include k-epsilon's; a failure of either propagates.
     PilotFieldResult solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
     /// A case whose steady iteration stalled (`why'): its time average into `record'
-    /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too or its spread is
-    /// beyond `Field time average spread limit' (the average is then recorded, not used). A used
+    /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too or the uncertainty
+    /// of its mean is beyond `Field time average uncertainty limit' (the average is then recorded,
+    /// not used). A used
     /// average's mean fields go to the case's VTU.
     bool time_average_of(PilotField &field, double dp, const std::string &where, const std::string &why,
                          std::vector<double> &record);

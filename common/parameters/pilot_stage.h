@@ -37,7 +37,7 @@ namespace servodrift
     double field_time_step_courant; ///< Courant number of the time step of a time average [1]
     unsigned int field_time_steps;  ///< time steps of a time average
     double field_averaged_fraction; ///< the last fraction of them that is averaged [1]
-    double field_time_average_spread_limit; ///< largest relative standard deviation of a usable time average [1]
+    double field_time_average_uncertainty_limit; ///< largest relative standard error of a usable time-averaged mean [1]
     /// flow model of a field case: automatic picks laminar below the transition Reynolds number
     /// (ideal velocity: E17 for the orifice, 2h sqrt(2 dp/rho)/nu for the nozzle) and k-epsilon above
     enum class FlowModel { automatic, laminar, k_epsilon, k_epsilon_launder_sharma, k_omega_sst };

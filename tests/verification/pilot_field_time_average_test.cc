@@ -12,7 +12,10 @@
 //   stalled iterate the flow settles on the steady solution, so the mean must be the properly
 //   converged case's C_dn and force within 1e-3 relative (the averaged half of the run starts once
 //   the start's transient has decayed below that), with the averaged time, the time step and
-//   the iterations recorded. With a spread limit of 0 the same average is recorded but not used.
+//   the iterations recorded. With an uncertainty limit of 0 the same average is recorded but not used.
+// - The uncertainty of a mean (the standard error by batch means) on a series whose answer is known
+//   in closed form: an AR(1) process x_t = phi x_(t-1) + e_t, like the correlated steps of a
+//   marched case.
 #include "common/table.h"
 #include "flow/pilot_field_cases.h"
 #include "flow/pilot_field_time_average.h"
@@ -30,6 +33,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <random>
+#include <vector>
 
 namespace servodrift::flow
 {
@@ -56,6 +61,9 @@ namespace servodrift::flow
     EXPECT_NEAR(a.mean.flapper_force / steady.flapper_force, 1, 2e-4);
     EXPECT_LT(a.discharge_coefficient_spread, 1e-5 * steady.discharge_coefficient);
     EXPECT_LT(a.flapper_force_spread, 1e-5 * steady.flapper_force);
+    // the error of a mean that does not move is below its (already tiny) spread
+    EXPECT_LE(a.discharge_coefficient_uncertainty, a.discharge_coefficient_spread);
+    EXPECT_LE(a.flapper_force_uncertainty, a.flapper_force_spread);
     EXPECT_NEAR(a.averaged_time, 50 * a.time_step, 1e-12 * a.averaged_time);
     // the mean fields (the VTU of a time-averaged case): a flow that does not move averages to its
     // own fields, here the last step's, to what each step leaves unconverged (its scaled residuals
@@ -120,15 +128,59 @@ namespace servodrift::flow
     std::printf("its VTU's pressure against the converged case's: %.2e dp at most\n", p_difference);
     EXPECT_LT(p_difference, 1e-2);
 
-    // a spread beyond `Field time average spread limit' (0 here: any) is not used: flag 2, the
-    // reduced-order value in the row, the average kept for flow/*_time_averages.csv
-    stalling.push_back("Pilot stage/Field time average spread limit=0");
+    // a mean uncertain beyond `Field time average uncertainty limit' (0 here: any) is not used: flag
+    // 2, the reduced-order value in the row, the average kept for flow/*_time_averages.csv
+    stalling.push_back("Pilot stage/Field time average uncertainty limit=0");
     ValveDescription strict = test::valve(stalling);
     const std::vector<double> rejected = Chain(strict, PilotGeometry::nozzle_flapper, 40).solve(gap_40um, dp_laminar);
     EXPECT_EQ(rejected[flag], flags::not_converged);
     EXPECT_EQ(rejected[discharge_coefficient], rejected[reduced_discharge_coefficient]);
     EXPECT_EQ(rejected[averaged_discharge_coefficient], r[discharge_coefficient]);
     EXPECT_GT(rejected[averaged_time], 0);
+    EXPECT_GT(rejected[flapper_force_uncertainty], 0);
+  }
+
+  // The standard error of the mean by batch means on AR(1) series x_t = phi x_(t-1) + e_t (e_t
+  // standard normal, x_0 from the stationary distribution), whose variance of the mean of n values
+  // is known: sigma_x^2/n [(1 + phi)/(1 - phi) - 2 phi (1 - phi^n)/(n (1 - phi)^2)], sigma_x^2 =
+  // 1/(1 - phi^2). With phi 0.8 (an integrated correlation time of 9 steps), n 1000 (a default time
+  // average's averaged steps) and 10 batches of 100, batch means underestimate the variance by about
+  // 4 % (the same finite-length term within a batch); the squared estimate of one series scatters by
+  // sqrt(2/9), 47 %, so its mean over 2000 series by 1 %: 10 % on the mean of the squared errors. The
+  // values' own standard deviation over sqrt(n) is three times too small here (sqrt(9)).
+  TEST(PilotFieldTimeAverage, BatchMeansStandardErrorOfACorrelatedSeries)
+  {
+    constexpr double phi = 0.8;
+    constexpr std::size_t n = 1000, series_count = 2000;
+    std::mt19937_64 random(20261126);
+    std::normal_distribution<double> normal;
+    const double variance_x = 1 / (1 - phi * phi);
+    const double exact = variance_x / n * ((1 + phi) / (1 - phi) - 2 * phi * (1 - std::pow(phi, n)) / (n * (1 - phi) * (1 - phi)));
+    double batch_estimate = 0, naive_estimate = 0;
+    std::vector<double> x(n);
+    for (std::size_t s = 0; s < series_count; ++s)
+      {
+        x[0] = std::sqrt(variance_x) * normal(random);
+        for (std::size_t t = 1; t < n; ++t)
+          x[t] = phi * x[t - 1] + normal(random);
+        const double error = batch_means_standard_error(x, 10);
+        batch_estimate += error * error / series_count;
+        double mean = 0, square = 0;
+        for (double v : x)
+          mean += v / n;
+        for (double v : x)
+          square += (v - mean) * (v - mean) / (n - 1);
+        naive_estimate += square / n / series_count;
+      }
+    std::printf("AR(1), phi %.1f, n %zu: variance of the mean %.4e exact, %.4e by 10 batch means (%+.1f %%), %.4e "
+                "naive (%+.1f %%)\n",
+                phi, n, exact, batch_estimate, 100 * (batch_estimate / exact - 1), naive_estimate,
+                100 * (naive_estimate / exact - 1));
+    EXPECT_NEAR(batch_estimate / exact, 1, 0.1);
+    EXPECT_LT(naive_estimate / exact, 0.2);
+    // degenerate series: one value, or a constant, have no error to estimate
+    EXPECT_EQ(batch_means_standard_error({1.0}, 10), 0.0);
+    EXPECT_EQ(batch_means_standard_error(std::vector<double>(50, 2.5), 10), 0.0);
   }
 } // namespace servodrift::flow
 
