@@ -84,6 +84,8 @@ int main(int argc, char **argv)
     {"SST orifice cavitating at 20.6 MPa, resolution 1", orifice, Turbulence::k_omega_sst, 1, 0, 20.6e6, true, 0.6},
     {"k-epsilon 40 um at 120 degC, 3.09 MPa, resolution 1", nozzle, Turbulence::k_epsilon, 1, 40e-6, 3.09e6, true, 0.6, 120},
     {"k-epsilon orifice cavitating at 20.6 MPa, resolution 1", orifice, Turbulence::k_epsilon, 1, 0, 20.6e6, true, 0.6},
+    {"Launder-Sharma orifice at 120 degC, 1.03 MPa", orifice, Turbulence::k_epsilon_launder_sharma, 1, 0, 1.03e6, true, 0.6, 120},
+    {"Launder-Sharma 40 um at 120 degC, 3.09 MPa", nozzle, Turbulence::k_epsilon_launder_sharma, 1, 40e-6, 3.09e6, true, 0.6, 120},
   };
   std::set<std::size_t> chosen;
   std::vector<std::string> settings{"Output/Progress=none", "Output/Flow fields=none"};
