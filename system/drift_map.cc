@@ -79,7 +79,7 @@ namespace servodrift::system
       DriftPoint p{};
       p.temperature = r[0];
       p.deviation_angle = r[1];
-      p.offsets = {r[2], r[3], r[4]};
+      p.offsets = {r[2], r[3], r[4], {}, {}};
       if (!std::isnan(r[5]))
         p.null_shift_current = r[5];
       std::size_t k = 6;

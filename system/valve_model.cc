@@ -306,7 +306,7 @@ namespace servodrift::system
   Offsets ValveModel::described_offsets() const
   {
     const auto &base = valve.offsets;
-    Offsets o{base.spring_tube_rest_angle, base.magnetic_null, base.hydraulic_null};
+    Offsets o{base.spring_tube_rest_angle, base.magnetic_null, base.hydraulic_null, {}, {}};
     const auto &a = valve.asymmetry;
     o.sides = {a.left, a.right};
     o.magnetic = {a.lower_gap_mismatch, a.left_remanence, a.right_remanence};
