@@ -88,12 +88,10 @@ namespace servodrift
                       "Field level, time average: the time steps marched. [1]");
     prm.declare_entry("Field time average uncertainty limit", "0.01", Patterns::Double(0, 10),
                       "Field level, time average: the largest standard error of the mean of C_d and of the "
-                      "flapper force (batch means over the averaged time), relative to the means, for which "
-                      "the mean stands for the case (flag 5). Beyond it the case is flagged 2 and its average "
-                      "only listed. The valve feels the mean (a jet or cavity cycling at 0.1-1 MHz is far "
-                      "above its bandwidth); the standard deviation, listed as the spread, says how unsteady "
-                      "the case is. The default allows the mean the error the default mesh is allowed "
-                      "(1 %, doc/validation.md). [1]");
+                      "flapper force (batch means), relative to the means, for which the mean stands for the "
+                      "case (flag 5); beyond it flag 2, the average only listed. The valve feels the mean, "
+                      "not the pilot's MHz cycles (doc/method.md). Default: the 1 % allowed the default "
+                      "mesh. [1]");
     prm.declare_entry("Field averaged fraction", "0.5", Patterns::Double(0.1, 1),
                       "Field level, time average: the last this fraction of the time steps is averaged "
                       "(the first part lets the start from the stalled iterate die out). [1]");
