@@ -103,7 +103,8 @@ namespace servodrift
       if (!(list->back() == 1))
         refuse(entry, "ends with " + format_number(list->back()) +
                         "; it must end with 1 (p_s - p_r) for `servodrift run': the pilot bridge's control "
-                        "pressure may lie anywhere between return and supply");    if (!v.pilot.model_form_alternatives.empty() && v.pilot.model_level != "field")
+                        "pressure may lie anywhere between return and supply");
+    if (!v.pilot.model_form_alternatives.empty() && v.pilot.model_level != "field")
       refuse("Pilot stage/Model-form alternatives",
              "lists other flow models, which only the field level has; set `Pilot stage/Model level' = field or "
              "leave it empty");
@@ -112,6 +113,10 @@ namespace servodrift
   void validate(const ValveDescription &v)
   {
     const auto &op = v.operating;
+    if (!(v.pilot.field_time_steps_limit >= v.pilot.field_time_steps))
+      refuse("Pilot stage/Field time steps limit", "= " + std::to_string(v.pilot.field_time_steps_limit) +
+                                                     " must be at least `Pilot stage/Field time steps' = " +
+                                                     std::to_string(v.pilot.field_time_steps));
     if (!(op.rated_current > 0))
       refuse("Operating conditions/Rated current", "= " + format_number(op.rated_current) +
                                                      " A must be > 0: drifts are given in % of it (D7, D9)");

@@ -4,6 +4,7 @@
 
 #include "common/error.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -205,15 +206,16 @@ namespace servodrift::flow
       {
         // `Report interval': every this many steps; otherwise a line at every tenth of the run
         // (a time average takes minutes), unless `Output/Progress' is none
+        // (of the steps planned so far: a mean still uncertain gets more)
         const unsigned int interval = valve.flow_solver.report_interval;
-        const unsigned int steps = valve.pilot.field_time_steps;
+        const unsigned int tenth = std::max(1u, valve.pilot.field_time_steps / 10);
         const bool tenths = interval == 0 && valve.output.progress != OutputParameters::Progress::none;
-        a = time_average(field, dp, valve.pilot, [&](unsigned int step, double time, const PilotFieldResult &r) {
+        a = time_average(field, dp, valve.pilot, [&](unsigned int step, unsigned int planned, double time, const PilotFieldResult &r) {
           if (interval > 0 && step % interval == 0)
-            std::fprintf(stderr, "  time step %u, t %.4g s: C_d %.6f, flapper force %.6f N, %u iterations%s\n", step, time,
-                         r.discharge_coefficient, r.flapper_force, r.iterations, r.cavitating ? ", cavitating" : "");
-          else if (tenths && steps >= 10 && step % (steps / 10) == 0)
-            std::fprintf(stderr, "servodrift: %s: time step %u of %u (t %.3g s), C_d %.4f\n", where.c_str(), step, steps,
+            std::fprintf(stderr, "  time step %u of %u, t %.4g s: C_d %.6f, flapper force %.6f N, %u iterations%s\n", step,
+                         planned, time, r.discharge_coefficient, r.flapper_force, r.iterations, r.cavitating ? ", cavitating" : "");
+          else if (tenths && step % tenth == 0)
+            std::fprintf(stderr, "servodrift: %s: time step %u of %u (t %.3g s), C_d %.4f\n", where.c_str(), step, planned,
                          time, r.discharge_coefficient);
         });
       }
@@ -233,16 +235,17 @@ namespace servodrift::flow
     // the tables want the mean (the valve does not follow a jet or cavity cycling at 0.1-1 MHz):
     // it stands for the case if the run pins it down, whatever the unsteadiness (the spread)
     const double limit = valve.pilot.field_time_average_uncertainty_limit;
-    const double C_d_error = a.discharge_coefficient_uncertainty / std::abs(a.mean.discharge_coefficient);
-    const double force_error =
-      kind == PilotGeometry::nozzle_flapper ? a.flapper_force_uncertainty / std::abs(a.mean.flapper_force) : 0.0;
+    const double C_d_error = a.discharge_coefficient_relative_uncertainty;
+    const double force_error = a.flapper_force_relative_uncertainty;
     if (!(C_d_error <= limit && force_error <= limit))
       {
         std::cerr << "servodrift: warning: " << where << ": the mean of its time average is uncertain by "
                   << format_number(100 * C_d_error) << " % in C_d and " << format_number(100 * force_error)
                   << " % in the flapper force (standard errors), beyond `Pilot stage/Field time average uncertainty "
                      "limit' ("
-                  << format_number(100 * limit) << " %): listed in flow/*_time_averages.csv, not used\n";
+                  << format_number(100 * limit) << " %) after " << std::lround(a.averaged_time / a.time_step)
+                  << " averaged steps, what `Pilot stage/Field time steps limit' allows: listed in "
+                     "flow/*_time_averages.csv, not used\n";
         return false;
       }
     record_result(record, a.mean);

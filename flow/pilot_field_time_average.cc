@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace servodrift::flow
@@ -82,45 +83,72 @@ namespace servodrift::flow
     return means.standard_deviation() * std::sqrt(1.0 / double(batches - 1));
   }
 
+  AveragingPlan::AveragingPlan(unsigned int first, double averaged_fraction, unsigned int most, double limit_)
+    : transient_steps(first - std::max(2u, std::min(first, static_cast<unsigned int>(std::lround(averaged_fraction * first)))))
+    , planned_steps(first)
+    , most_steps(std::max(first, most))
+    , limit(limit_)
+  {}
+
+  bool AveragingPlan::lengthen(double error)
+  {
+    if (error <= limit || planned_steps >= most_steps)
+      return false;
+    const double ratio = limit > 0 ? error / limit : std::numeric_limits<double>::infinity();
+    const double asked = 1.1 * std::min(std::max(ratio * ratio, 1.0), 1e9) * averaged();
+    // (less a millionth of a step: 1.1 x 4 x 200 is 880 and a rounding error, not 881)
+    planned_steps = static_cast<unsigned int>(std::min<double>(most_steps, transient_steps + std::ceil(asked - 1e-6)));
+    return true;
+  }
+
   TimeAverage time_average(PilotField &field, double dp, const PilotStageParameters &settings,
-                           const std::function<void(unsigned int, double, const PilotFieldResult &)> &each_step)
+                           const std::function<void(unsigned int, unsigned int, double, const PilotFieldResult &)> &each_step)
   {
     TimeAverage a;
     a.time_step = field.courant_time_step(settings.field_time_step_courant);
-    const unsigned int steps = settings.field_time_steps;
-    const unsigned int averaged = std::max(
-      2u, std::min(steps, static_cast<unsigned int>(std::lround(settings.field_averaged_fraction * steps))));
+    AveragingPlan plan(settings.field_time_steps, settings.field_averaged_fraction, settings.field_time_steps_limit,
+                       settings.field_time_average_uncertainty_limit);
+    const bool has_flapper = field.geometry() == PilotGeometry::nozzle_flapper;
     RunningMoments Q, C_d, Re, force, land, jet, bore;
     std::vector<double> C_d_series, force_series; // over the averaged steps, for the standard errors
     RunningFields fields;
     PilotFieldResult &m = a.mean;
-    for (unsigned int step = 0; step < steps; ++step)
+    auto relative_errors = [&] {
+      a.discharge_coefficient_uncertainty = batch_means_standard_error(C_d_series, mean_batches);
+      a.flapper_force_uncertainty = batch_means_standard_error(force_series, mean_batches);
+      a.discharge_coefficient_relative_uncertainty = a.discharge_coefficient_uncertainty / std::abs(C_d.mean);
+      a.flapper_force_relative_uncertainty = has_flapper ? a.flapper_force_uncertainty / std::abs(force.mean) : 0.0;
+      return std::max(a.discharge_coefficient_relative_uncertainty, a.flapper_force_relative_uncertainty);
+    };
+    for (unsigned int step = 0; step < plan.planned(); ++step)
       {
         const PilotFieldResult r = field.advance(dp, a.time_step, step_iterations, step_tolerance);
         m.iterations += r.iterations;
         if (each_step)
-          each_step(step + 1, (step + 1) * a.time_step, r);
-        if (step + averaged < steps)
+          each_step(step + 1, plan.planned(), (step + 1) * a.time_step, r);
+        if (!plan.averages(step))
           continue;
         Q.add(r.flow_rate), C_d.add(r.discharge_coefficient), Re.add(r.reynolds_number);
         force.add(r.flapper_force), land.add(r.land_force), jet.add(r.jet_force), bore.add(r.bore_pressure);
         C_d_series.push_back(r.discharge_coefficient), force_series.push_back(r.flapper_force);
         fields.add(field.fields());
-        const bool first = Q.count == 1;
-        m.minimum_pressure = first ? r.minimum_pressure : std::min(m.minimum_pressure, r.minimum_pressure);
+        const bool start = Q.count == 1;
+        m.minimum_pressure = start ? r.minimum_pressure : std::min(m.minimum_pressure, r.minimum_pressure);
         m.minimum_absolute_pressure =
-          first ? r.minimum_absolute_pressure : std::min(m.minimum_absolute_pressure, r.minimum_absolute_pressure);
+          start ? r.minimum_absolute_pressure : std::min(m.minimum_absolute_pressure, r.minimum_absolute_pressure);
         m.cavitating = m.cavitating || r.cavitating;
         m.max_wall_y_plus = std::max(m.max_wall_y_plus, r.max_wall_y_plus);
         m.pressure_difference = r.pressure_difference, m.turbulence = r.turbulence;
+        // at the end of the plan: a mean not yet pinned down gets the averaged time it asks for
+        if (plan.at_end(step))
+          plan.lengthen(relative_errors());
       }
     m.flow_rate = Q.mean, m.discharge_coefficient = C_d.mean, m.reynolds_number = Re.mean;
     m.flapper_force = force.mean, m.land_force = land.mean, m.jet_force = jet.mean, m.bore_pressure = bore.mean;
     a.discharge_coefficient_spread = C_d.standard_deviation();
     a.flapper_force_spread = force.standard_deviation();
-    a.discharge_coefficient_uncertainty = batch_means_standard_error(C_d_series, mean_batches);
-    a.flapper_force_uncertainty = batch_means_standard_error(force_series, mean_batches);
-    a.averaged_time = averaged * a.time_step;
+    relative_errors();
+    a.averaged_time = plan.averaged() * a.time_step;
     a.mean_fields = fields.result();
     return a;
   }

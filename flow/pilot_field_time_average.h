@@ -27,6 +27,10 @@ namespace servodrift::flow
     /// above the armature's and the spool's bandwidth).
     double discharge_coefficient_uncertainty = 0; ///< [1]
     double flapper_force_uncertainty = 0;         ///< [N]
+    /// The same relative to the means, the force's 0 where the geometry has no flapper: what
+    /// `Field time average uncertainty limit' bounds.
+    double discharge_coefficient_relative_uncertainty = 0; ///< [1]
+    double flapper_force_relative_uncertainty = 0;         ///< [1]
     double time_step = 0;                    ///< [s]
     double averaged_time = 0;                ///< [s]
     /// The cell and face fields averaged over the averaged time (velocities, pressure, fluxes, the
@@ -43,10 +47,40 @@ namespace servodrift::flow
   /// independent (checked on AR(1) series, pilot_field_time_average_test.cc).
   double batch_means_standard_error(const std::vector<double> &series, std::size_t batches);
 
+  /// The plan of a time average's steps: `first' steps, the last `averaged_fraction' of them averaged
+  /// (the first part lets the start from the stalled iterate die out, cut once); at the end of the
+  /// plan a mean whose relative standard error still exceeds `limit' gets the averaged time it asks
+  /// for, up to `most' steps in all. Over times long against the flow's correlation time the error of
+  /// a mean falls as 1/sqrt(time): (error/limit)^2 times the averaged steps, and a tenth more against
+  /// the estimate's own scatter (about 25 % with 10 batches).
+  class AveragingPlan
+  {
+  public:
+    AveragingPlan(unsigned int first, double averaged_fraction, unsigned int most, double limit);
+    unsigned int transient() const { return transient_steps; } ///< steps before the averaged ones
+    unsigned int planned() const { return planned_steps; }    ///< steps in all, so far
+    unsigned int averaged() const { return planned_steps - transient_steps; }
+    /// Whether step (from 0) is averaged.
+    bool averages(unsigned int step) const { return step >= transient_steps; }
+    /// Whether step is the plan's last and the plan could still grow: then call lengthen.
+    bool at_end(unsigned int step) const { return step + 1 == planned_steps && planned_steps < most_steps; }
+    /// With the mean's relative error at the end of the plan: lengthens the plan if the error
+    /// exceeds the limit (a NaN error too); returns whether it did.
+    bool lengthen(double relative_error);
+
+  private:
+    unsigned int transient_steps, planned_steps, most_steps;
+    double limit;
+  };
+
   /// Marches `field' at pressure difference dp from its current fields (`Field time steps' steps at
-  /// `Field time step Courant number'), averaging the last `Field averaged fraction' of them. Throws
-  /// std::runtime_error if a step diverges, std::invalid_argument if nothing flows.
-  /// `each_step', if set, sees every step's results (a progress report).
-  TimeAverage time_average(PilotField &field, double pressure_difference, const PilotStageParameters &settings,
-                           const std::function<void(unsigned int step, double time, const PilotFieldResult &)> &each_step = {});
+  /// `Field time step Courant number'), averaging the last `Field averaged fraction' of them. While
+  /// the relative standard error of the mean C_d or flapper force exceeds `Field time average
+  /// uncertainty limit', the averaged time is lengthened by averaged_steps_for, up to `Field time
+  /// steps limit' steps in all (the start's transient is cut once). Throws std::runtime_error if a
+  /// step diverges, std::invalid_argument if nothing flows. `each_step', if set, sees every step's
+  /// results and the steps planned so far (a progress report).
+  TimeAverage time_average(
+    PilotField &field, double pressure_difference, const PilotStageParameters &settings,
+    const std::function<void(unsigned int step, unsigned int planned, double time, const PilotFieldResult &)> &each_step = {});
 } // namespace servodrift::flow

@@ -85,7 +85,12 @@ namespace servodrift
                       "Field level, time average: the time step, constant, at this largest cell Courant "
                       "number of the fields it starts from. [1]");
     prm.declare_entry("Field time steps", "2000", Patterns::Integer(20, 10000000),
-                      "Field level, time average: the time steps marched. [1]");
+                      "Field level, time average: the time steps marched first. [1]");
+    prm.declare_entry("Field time steps limit", "10000", Patterns::Integer(20, 10000000),
+                      "Field level, time average: a mean still uncertain beyond `Field time average "
+                      "uncertainty limit' after `Field time steps' is marched on, its averaged time "
+                      "lengthened to what its standard error (falling as 1/sqrt of that time) asks, up to "
+                      "this many steps in all; at least `Field time steps'. [1]");
     prm.declare_entry("Field time average uncertainty limit", "0.01", Patterns::Double(0, 10),
                       "Field level, time average: the largest standard error of the mean of C_d and of the "
                       "flapper force (batch means), relative to the means, for which the mean stands for the "
@@ -167,6 +172,7 @@ namespace servodrift
     field_time_average = prm.get_bool("Field time average");
     field_time_step_courant = prm.get_double("Field time step Courant number");
     field_time_steps = static_cast<unsigned int>(prm.get_integer("Field time steps"));
+    field_time_steps_limit = static_cast<unsigned int>(prm.get_integer("Field time steps limit"));
     field_averaged_fraction = prm.get_double("Field averaged fraction");
     field_time_average_uncertainty_limit = prm.get_double("Field time average uncertainty limit");
     auto model_of = [&](const char *entry) {

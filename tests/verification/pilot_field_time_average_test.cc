@@ -15,7 +15,7 @@
 //   the iterations recorded. With an uncertainty limit of 0 the same average is recorded but not used.
 // - The uncertainty of a mean (the standard error by batch means) on a series whose answer is known
 //   in closed form: an AR(1) process x_t = phi x_(t-1) + e_t, like the correlated steps of a
-//   marched case.
+//   marched case; and the average lengthened on such series until its mean is pinned down.
 #include "common/table.h"
 #include "flow/pilot_field_cases.h"
 #include "flow/pilot_field_time_average.h"
@@ -131,6 +131,7 @@ namespace servodrift::flow
     // a mean uncertain beyond `Field time average uncertainty limit' (0 here: any) is not used: flag
     // 2, the reduced-order value in the row, the average kept for flow/*_time_averages.csv
     stalling.push_back("Pilot stage/Field time average uncertainty limit=0");
+    stalling.push_back("Pilot stage/Field time steps limit=400"); // no lengthening: any mean is uncertain against 0
     ValveDescription strict = test::valve(stalling);
     const std::vector<double> rejected = Chain(strict, PilotGeometry::nozzle_flapper, 40).solve(gap_40um, dp_laminar);
     EXPECT_EQ(rejected[flag], flags::not_converged);
@@ -206,6 +207,95 @@ namespace servodrift::flow
     // degenerate series: one value, or a constant, have no error to estimate
     EXPECT_EQ(batch_means_standard_error({1.0}, 10), 0.0);
     EXPECT_EQ(batch_means_standard_error(std::vector<double>(50, 2.5), 10), 0.0);
+  }
+
+  // A time average lengthened until its mean is pinned down (AveragingPlan, as time_average runs it),
+  // on series 1 + 0.05 x_t with x_t the AR(1) process above (phi 0.8), whose mean 1 is known and whose
+  // relative standard error over n values is 0.05 sqrt(var_n) from the closed form: 0.25/sqrt(n) for
+  // large n. With a limit of 0.5 %, n* = 2 496 steps pin the mean down; the plan starts with 400
+  // steps (200 averaged, 20 steps a batch against a correlation time of 9: a cavity's cycle of
+  // hundreds of steps in a first window of 1 000), like a stalled case's first run. Over 400 series:
+  // - every run ends with its estimated error within the limit (the step limit is not reached);
+  // - the real errors of the means are what the limit promises: RMS at most 1.2 times it (the
+  //   stopping rule favours runs whose estimate fell low; 20 % for that and the 5 % sampling error of
+  //   400 squares), and beyond twice the limit at most 10 % of runs (a normal error: 4.6 %);
+  // - the median run averages 0.8-1.5 n* steps: the plan asks for 1.1 n* from a 1/sqrt(n) estimate
+  //   that scatters by about 25 %; single runs spread far wider (a low first estimate stops one at
+  //   200 steps, a high one asks for several n*), which is why the real errors are the test;
+  // - with a step limit of 1 000 a run stops there, its error beyond the limit.
+  TEST(PilotFieldTimeAverage, LengthensTheAverageUntilItsMeanIsPinnedDown)
+  {
+    constexpr double phi = 0.8, amplitude = 0.05, limit = 0.005;
+    constexpr unsigned int series_count = 400;
+    const double variance_x = 1 / (1 - phi * phi);
+    auto exact_error = [&](double n) {
+      return amplitude * std::sqrt(variance_x / n * ((1 + phi) / (1 - phi) - 2 * phi * (1 - std::pow(phi, n)) / (n * (1 - phi) * (1 - phi))));
+    };
+    double n_star = 200;
+    while (exact_error(n_star) > limit)
+      n_star += 1;
+    std::mt19937_64 random(20261127);
+    std::normal_distribution<double> normal;
+    auto run = [&](unsigned int most, double &mean) {
+      AveragingPlan plan(400, 0.5, most, limit);
+      std::vector<double> averaged;
+      double x = std::sqrt(variance_x) * normal(random);
+      double error = 0;
+      for (unsigned int step = 0; step < plan.planned(); ++step)
+        {
+          x = phi * x + normal(random);
+          if (!plan.averages(step))
+            continue;
+          averaged.push_back(1 + amplitude * x);
+          if (plan.at_end(step))
+            {
+              double m = 0;
+              for (double v : averaged)
+                m += v / averaged.size();
+              plan.lengthen(batch_means_standard_error(averaged, 10) / std::abs(m));
+            }
+        }
+      mean = 0;
+      for (double v : averaged)
+        mean += v / averaged.size();
+      error = batch_means_standard_error(averaged, 10) / std::abs(mean);
+      EXPECT_EQ(plan.averaged(), averaged.size());
+      return std::make_pair(plan.averaged(), error);
+    };
+    std::vector<unsigned int> steps_taken;
+    unsigned int within = 0, beyond_twice = 0;
+    double square_error = 0;
+    for (unsigned int s = 0; s < series_count; ++s)
+      {
+        double mean = 0;
+        const auto [steps, error] = run(1000000, mean);
+        steps_taken.push_back(steps);
+        within += error <= limit;
+        beyond_twice += std::abs(mean - 1) > 2 * limit;
+        square_error += (mean - 1) * (mean - 1) / series_count;
+      }
+    std::sort(steps_taken.begin(), steps_taken.end());
+    const double median = steps_taken[series_count / 2];
+    std::printf("lengthened to a %.1f %% error (n* %.0f steps): %u of %u runs end within it; averaged steps %u to %u, "
+                "median %.2f n*; real errors of the means %.2f %% RMS, %u runs beyond twice the limit\n",
+                100 * limit, n_star, within, series_count, steps_taken.front(), steps_taken.back(), median / n_star,
+                100 * std::sqrt(square_error), beyond_twice);
+    EXPECT_EQ(within, series_count);
+    EXPECT_LT(std::sqrt(square_error), 1.2 * limit);
+    EXPECT_LE(beyond_twice, series_count / 10);
+    EXPECT_GE(median, 0.8 * n_star);
+    EXPECT_LE(median, 1.5 * n_star);
+    double mean = 0;
+    const auto [capped_steps, capped_error] = run(1000, mean);
+    std::printf("with a step limit of 1 000: %u averaged steps, error %.2f %%\n", capped_steps, 100 * capped_error);
+    EXPECT_EQ(capped_steps, 800u);
+    EXPECT_GT(capped_error, limit);
+    // a plan at its limit, or with a mean already pinned down, stays as it is
+    AveragingPlan pinned(400, 0.5, 10000, limit);
+    EXPECT_FALSE(pinned.lengthen(0.5 * limit));
+    EXPECT_EQ(pinned.planned(), 400u);
+    EXPECT_TRUE(pinned.lengthen(2 * limit));
+    EXPECT_EQ(pinned.planned(), 200u + 880u); // 1.1 x 2^2 x 200 averaged
   }
 } // namespace servodrift::flow
 
