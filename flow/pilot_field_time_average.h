@@ -57,7 +57,6 @@ namespace servodrift::flow
   {
   public:
     AveragingPlan(unsigned int first, double averaged_fraction, unsigned int most, double limit);
-    unsigned int transient() const { return transient_steps; } ///< steps before the averaged ones
     unsigned int planned() const { return planned_steps; }    ///< steps in all, so far
     unsigned int averaged() const { return planned_steps - transient_steps; }
     /// Whether step (from 0) is averaged.
