@@ -368,6 +368,7 @@ namespace servodrift::flow
     PilotFieldResult r = d.result_of(dp);
     r.iterations = step.iterations;
     r.pressure_relaxation = step.pressure_relaxation;
+    r.step_converged = step.converged;
     return r;
   }
 

@@ -49,6 +49,8 @@ namespace servodrift::flow
     double max_turbulent_viscosity_ratio = 0; ///< largest mu_t/mu of a cell (0 if laminar) [1]
     unsigned int iterations = 0;          ///< SIMPLEC iterations of this solve (start-up included)
     unsigned int coarse_mesh_iterations = 0; ///< grid sequencing: iterations on the coarser meshes first
+    /// time stepping (advance): the step met its tolerance within its iterations
+    bool step_converged = true;
     double pressure_relaxation = 0; ///< the pressure relaxation the solve ended with (lowered by caught cycles) [1]
     FlowSolverParameters::Turbulence turbulence = FlowSolverParameters::Turbulence::laminar;
   };

@@ -69,7 +69,8 @@ namespace servodrift::flow
       CsvDocument doc = case_document(
         valve, name + "_time_averages",
         "field-level cases whose steady iteration stalled, marched in time (BDF2; URANS if turbulent): the mean and the standard "
-        "deviation (spread) over the averaged time and the standard error of the mean (uncertainty, batch means) "
+        "deviation (spread) over the averaged time, the standard error of the mean (uncertainty, batch means) and the "
+        "averaged steps whose equations the step's iteration cap stopped short of its tolerance "
         "(Pilot stage/Field time steps, Field averaged fraction, Field time step Courant number); flag 5: the table "
         "uses the mean, 2: its uncertainty is beyond Field time average uncertainty limit and the reduced-order "
         "value stands in");
@@ -81,6 +82,7 @@ namespace servodrift::flow
                      "flapper_force_uncertainty[N]",
                      "time_step[s]",
                      "averaged_time[s]",
+                     "unconverged_steps[1]",
                      "flag[1]"});
       for (const auto &r : records)
         if (r[averaged_time] > 0)
@@ -88,7 +90,8 @@ namespace servodrift::flow
                               format_cell(r[averaged_discharge_coefficient]), format_cell(r[discharge_coefficient_spread]),
                               format_cell(r[discharge_coefficient_uncertainty]), format_cell(r[averaged_flapper_force]),
                               format_cell(r[flapper_force_spread]), format_cell(r[flapper_force_uncertainty]),
-                              format_cell(r[time_step]), format_cell(r[averaged_time]), format_cell(r[flag])});
+                              format_cell(r[time_step]), format_cell(r[averaged_time]),
+                              format_cell(r[unconverged_steps]), format_cell(r[flag])});
       write_file_atomically(flow_directory(valve) + "/" + name + "_time_averages" + variant + ".csv", doc.text());
     }
   } // namespace

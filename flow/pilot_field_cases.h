@@ -55,6 +55,7 @@ namespace servodrift::flow
       flapper_force_uncertainty,
       averaged_time,
       time_step,
+      unconverged_steps, ///< of the averaged steps: those the step's iteration cap stopped (TimeAverage)
       record_length
     };
   } // namespace case_record

@@ -128,6 +128,7 @@ namespace servodrift::flow
           each_step(step + 1, plan.planned(), (step + 1) * a.time_step, r);
         if (!plan.averages(step))
           continue;
+        a.unconverged_steps += !r.step_converged;
         Q.add(r.flow_rate), C_d.add(r.discharge_coefficient), Re.add(r.reynolds_number);
         force.add(r.flapper_force), land.add(r.land_force), jet.add(r.jet_force), bore.add(r.bore_pressure);
         C_d_series.push_back(r.discharge_coefficient), force_series.push_back(r.flapper_force);
@@ -148,7 +149,8 @@ namespace servodrift::flow
     a.discharge_coefficient_spread = C_d.standard_deviation();
     a.flapper_force_spread = force.standard_deviation();
     relative_errors();
-    a.averaged_time = plan.averaged() * a.time_step;
+    a.averaged_steps = plan.averaged();
+    a.averaged_time = a.averaged_steps * a.time_step;
     a.mean_fields = fields.result();
     return a;
   }

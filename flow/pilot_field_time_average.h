@@ -33,6 +33,11 @@ namespace servodrift::flow
     double flapper_force_relative_uncertainty = 0;         ///< [1]
     double time_step = 0;                    ///< [s]
     double averaged_time = 0;                ///< [s]
+    unsigned int averaged_steps = 0;
+    /// Averaged steps whose implicit equations the step's iteration cap stopped short of its
+    /// tolerance (a cavity collapsing within a step): a few are harmless in a mean over thousands,
+    /// many say the time step is too long for the flow.
+    unsigned int unconverged_steps = 0;
     /// The cell and face fields averaged over the averaged time (velocities, pressure, fluxes, the
     /// turbulence model's fields, the liquid fraction; a cell cavitates if its mean liquid fraction is
     /// below 1), for the VTU of the mean flow.

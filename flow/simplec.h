@@ -34,6 +34,9 @@ namespace servodrift::flow
     /// k-epsilon: cells whose turbulent viscosity the last iteration held at the limit
     /// (set_turbulent_viscosity_limit) instead of the model's value
     std::size_t cells_at_viscosity_limit = 0;
+    /// advance: the step's implicit equations met the tolerance (false: its iteration cap stopped
+    /// them first, and the step goes on from a partly solved state)
+    bool converged = true;
   };
 
   /// The iteration limit was reached (the fields are usable as a start, not as a result).

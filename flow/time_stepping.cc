@@ -75,6 +75,7 @@ namespace servodrift::flow
       ~Restore() { momentum.set_relaxation(alpha); }
     } restore{d.momentum, steady_relaxation};
     Residuals r;
+    bool converged = false;
     for (bool done = false; !done;)
       {
         const unsigned int it = control.next();
@@ -94,11 +95,14 @@ namespace servodrift::flow
             case IterationControl::Verdict::diverged:
               d.forget_time_levels();
               throw std::runtime_error("flow: " + d.mesh.source + ": time step: " + control.reason());
-            default: done = true; // converged, or the step's iterations used up
+            case IterationControl::Verdict::converged: converged = done = true; break;
+            default: done = true; // the step's iterations used up
           }
       }
     d.previous.dt = 0; // steady again unless the next step is called
-    return d.finish(control, r);
+    SolveReport report = d.finish(control, r);
+    report.converged = converged;
+    return report;
   }
 
   double SimplecSolver::courant_time_step(double courant) const

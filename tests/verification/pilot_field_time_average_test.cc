@@ -65,6 +65,8 @@ namespace servodrift::flow
     EXPECT_LE(a.discharge_coefficient_uncertainty, a.discharge_coefficient_spread);
     EXPECT_LE(a.flapper_force_uncertainty, a.flapper_force_spread);
     EXPECT_NEAR(a.averaged_time, 50 * a.time_step, 1e-12 * a.averaged_time);
+    EXPECT_EQ(a.averaged_steps, 50u);
+    EXPECT_EQ(a.unconverged_steps, 0u); // a flow that does not move: every step meets its tolerance at once
     // the mean fields (the VTU of a time-averaged case): a flow that does not move averages to its
     // own fields, here the last step's, to what each step leaves unconverged (its scaled residuals
     // 1e-4: 1e-4 of dp and v_ideal)
