@@ -235,7 +235,8 @@ namespace servodrift::flow
     record[unconverged_steps] = a.unconverged_steps;
     if (a.unconverged_steps > 0)
       std::cerr << "servodrift: note: " << where << ": " << a.unconverged_steps << " of its " << a.averaged_steps
-                << " averaged time steps stopped at the step's iteration cap short of its tolerance\n";
+                << " averaged time steps stopped at the step's iteration cap (`Pilot stage/Field time step "
+                   "iterations') short of its tolerance\n";
     // the tables want the mean (the valve does not follow a jet or cavity cycling at 0.1-1 MHz):
     // it stands for the case if the run pins it down, whatever the unsteadiness (the spread)
     const double limit = valve.pilot.field_time_average_uncertainty_limit;

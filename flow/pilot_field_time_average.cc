@@ -10,11 +10,10 @@ namespace servodrift::flow
   namespace
   {
     /// Each step's implicit equations are iterated until their scaled residuals fall below this,
-    /// or for at most step_iterations SIMPLEC iterations: a step changes the fields little, so its
+    /// or for at most `Field time step iterations': a step changes the fields little, so its
     /// residuals start low (a few iterations per step). With 1e-4 a steady laminar case marched in
     /// time stays within 1.5e-4 of its steady C_dn (pilot_field_time_average_test.cc).
     constexpr double step_tolerance = 1e-4;
-    constexpr unsigned int step_iterations = 50;
     /// Batches of the standard error of a mean: 10 gives the error estimate itself about 25 %
     /// accuracy (9 degrees of freedom) while each batch still spans a tenth of the averaged time.
     constexpr std::size_t mean_batches = 10;
@@ -122,7 +121,7 @@ namespace servodrift::flow
     };
     for (unsigned int step = 0; step < plan.planned(); ++step)
       {
-        const PilotFieldResult r = field.advance(dp, a.time_step, step_iterations, step_tolerance);
+        const PilotFieldResult r = field.advance(dp, a.time_step, settings.field_time_step_iterations, step_tolerance);
         m.iterations += r.iterations;
         if (each_step)
           each_step(step + 1, plan.planned(), (step + 1) * a.time_step, r);
