@@ -71,7 +71,8 @@ namespace servodrift::flow
         "field-level cases whose steady iteration stalled, marched in time (BDF2; URANS if turbulent): the mean and the standard "
         "deviation (spread) over the averaged time, the standard error of the mean (uncertainty, batch means) and the "
         "averaged steps whose equations the step's iteration cap stopped short of its tolerance "
-        "(Pilot stage/Field time steps, Field averaged fraction, Field time step Courant number); flag 5: the table "
+        "(Pilot stage/Field time steps, Field averaged fraction, Field time step Courant number, Field time step "
+        "iterations); flag 5: the table "
         "uses the mean, 2: its uncertainty is beyond Field time average uncertainty limit and the reduced-order "
         "value stands in");
       doc.columns.insert(doc.columns.end(), {"discharge_coefficient[1]",
