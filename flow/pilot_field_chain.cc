@@ -233,6 +233,16 @@ namespace servodrift::flow
     record[averaged_time] = a.averaged_time;
     record[time_step] = a.time_step;
     record[unconverged_steps] = a.unconverged_steps;
+    if (!steps_converged(a))
+      {
+        std::cerr << "servodrift: warning: " << where << ": " << a.unconverged_steps << " of its " << a.averaged_steps
+                  << " averaged time steps stopped at the step's iteration cap short of its tolerance, more than "
+                  << format_number(100 * unconverged_steps_limit)
+                  << " %: the mean is not that of the marched equations (a smaller `Pilot stage/Field time step "
+                     "Courant number' or more `Field time step iterations'); listed in flow/*_time_averages.csv, not "
+                     "used\n";
+        return false;
+      }
     if (a.unconverged_steps > 0)
       std::cerr << "servodrift: note: " << where << ": " << a.unconverged_steps << " of its " << a.averaged_steps
                 << " averaged time steps stopped at the step's iteration cap (`Pilot stage/Field time step "

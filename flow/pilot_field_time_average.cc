@@ -82,6 +82,11 @@ namespace servodrift::flow
     return means.standard_deviation() * std::sqrt(1.0 / double(batches - 1));
   }
 
+  bool steps_converged(const TimeAverage &a)
+  {
+    return a.unconverged_steps <= unconverged_steps_limit * a.averaged_steps;
+  }
+
   AveragingPlan::AveragingPlan(unsigned int first, double averaged_fraction, unsigned int most, double limit_)
     : transient_steps(first - std::max(2u, std::min(first, static_cast<unsigned int>(std::lround(averaged_fraction * first)))))
     , planned_steps(first)

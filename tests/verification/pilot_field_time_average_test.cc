@@ -211,6 +211,24 @@ namespace servodrift::flow
     EXPECT_EQ(batch_means_standard_error(std::vector<double>(50, 2.5), 10), 0.0);
   }
 
+  // The gate on steps the iteration cap stopped: up to a tenth of the averaged steps the mean stands
+  // (the hot cavitating nozzles' 1-3 %), beyond it not (the laminar 60 um gap at Courant 4's 44 %).
+  TEST(PilotFieldTimeAverage, TooManyCappedStepsDoNotMakeAMean)
+  {
+    TimeAverage a;
+    a.averaged_steps = 9000;
+    for (unsigned int capped : {0u, 295u, 900u})
+      {
+        a.unconverged_steps = capped;
+        EXPECT_TRUE(steps_converged(a)) << capped;
+      }
+    for (unsigned int capped : {901u, 3960u, 9000u})
+      {
+        a.unconverged_steps = capped;
+        EXPECT_FALSE(steps_converged(a)) << capped;
+      }
+  }
+
   // A time average lengthened until its mean is pinned down (AveragingPlan, as time_average runs it),
   // on series 1 + 0.05 x_t with x_t the AR(1) process above (phi 0.8), whose mean 1 is known and whose
   // relative standard error over n values is 0.05 sqrt(var_n) from the closed form: 0.25/sqrt(n) for
