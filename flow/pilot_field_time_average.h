@@ -33,7 +33,7 @@ namespace servodrift::flow
     double flapper_force_relative_uncertainty = 0;         ///< [1]
     double time_step = 0;                    ///< [s]
     double averaged_time = 0;                ///< [s]
-    unsigned int averaged_steps = 0;
+    unsigned int averaged_steps = 0;         ///< the steps after the start's transient
     /// Averaged steps whose implicit equations the step's iteration cap stopped short of its
     /// tolerance (a cavity collapsing within a step): a few are harmless in a mean over thousands,
     /// many say the time step is too long for the flow.
@@ -46,7 +46,7 @@ namespace servodrift::flow
 
   /// The largest fraction of the averaged steps that the step's iteration cap may stop short of their
   /// tolerance for the mean to stand for the case. Hot cavitating nozzles (SST, Launder-Sharma) leave
-  /// 1-3 % of their steps capped, and a cap four times higher moved their means by less than their
+  /// up to 3.3 % of their steps capped, and a cap four times higher moved their means by less than their
   /// standard errors; the laminar 60 um gap marched at Courant 4 left 44 % capped and its C_d 16 %
   /// below Courant 1's (doc/validation.md).
   constexpr double unconverged_steps_limit = 0.1;
