@@ -144,9 +144,15 @@ namespace servodrift::flow
         m.cavitating = m.cavitating || r.cavitating;
         m.max_wall_y_plus = std::max(m.max_wall_y_plus, r.max_wall_y_plus);
         m.pressure_difference = r.pressure_difference, m.turbulence = r.turbulence;
-        // at the end of the plan: a mean not yet pinned down gets the averaged time it asks for
+        // at the end of the plan: a mean not yet pinned down gets the averaged time it asks for,
+        // unless the gate on capped steps refuses it already (more steps would only add to a mean
+        // that is not used; the capped fraction of a stationary run does not fall with its length)
         if (plan.at_end(step))
-          plan.lengthen(relative_errors());
+          {
+            a.averaged_steps = plan.averaged();
+            if (steps_converged(a))
+              plan.lengthen(relative_errors());
+          }
       }
     m.flow_rate = Q.mean, m.discharge_coefficient = C_d.mean, m.reynolds_number = Re.mean;
     m.flapper_force = force.mean, m.land_force = land.mean, m.jet_force = jet.mean, m.bore_pressure = bore.mean;

@@ -91,8 +91,9 @@ namespace servodrift::flow
   /// Marches `field' at pressure difference dp from its current fields (`Field time steps' steps at
   /// `Field time step Courant number'), averaging the last `Field averaged fraction' of them. While
   /// the relative standard error of the mean C_d or flapper force exceeds `Field time average
-  /// uncertainty limit', the averaged time is lengthened by averaged_steps_for, up to `Field time
-  /// steps limit' steps in all (the start's transient is cut once). Throws std::runtime_error if a
+  /// uncertainty limit', the averaged time is lengthened by AveragingPlan, up to `Field time
+  /// steps limit' steps in all (the start's transient is cut once); not if more than
+  /// unconverged_steps_limit of the steps averaged so far were capped (steps_converged). Throws std::runtime_error if a
   /// step diverges, std::invalid_argument if nothing flows. `each_step', if set, sees every step's
   /// results and the steps planned so far (a progress report).
   TimeAverage time_average(

@@ -229,6 +229,40 @@ namespace servodrift::flow
       }
   }
 
+  // An average with too many capped steps is not lengthened: the gate refuses its mean whatever its
+  // length, so more steps would be spent on a mean that is not used. RV-1's 40 um gap solved at 0.1
+  // MPa and marched at 0.2 MPa (its flow speeding up: steps that need more than one iteration), with an
+  // uncertainty limit of 0 (every plan asks to be lengthened) and a step limit of 400: with 50
+  // iterations a step every averaged step converges and the plan runs to the limit (350 averaged);
+  // with 1 a step more than a tenth are capped and the first plan (50 averaged) is all.
+  TEST(PilotFieldTimeAverage, TooManyCappedStepsAreNotLengthened)
+  {
+    for (const unsigned int iterations : {50u, 1u})
+      {
+        ValveDescription v = test::valve({"Pilot stage/Field time steps=100", "Pilot stage/Field time step Courant number=10",
+                                          "Pilot stage/Field time steps limit=400",
+                                          "Pilot stage/Field time average uncertainty limit=0",
+                                          "Pilot stage/Field time step iterations=" + std::to_string(iterations)});
+        PilotFieldCase c = pilot_field_case(v, 40);
+        c.turbulence = FlowSolverParameters::Turbulence::laminar;
+        PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, gap_40um);
+        nozzle.solve(dp_laminar);
+        const TimeAverage a = time_average(nozzle, 2 * dp_laminar, v.pilot);
+        std::printf("%u iterations a step: %u of %u averaged steps capped, C_dn %.5f\n", iterations, a.unconverged_steps,
+                    a.averaged_steps, a.mean.discharge_coefficient);
+        if (iterations > 1)
+          {
+            EXPECT_TRUE(steps_converged(a));
+            EXPECT_EQ(a.averaged_steps, 350u);
+          }
+        else
+          {
+            EXPECT_FALSE(steps_converged(a));
+            EXPECT_EQ(a.averaged_steps, 50u);
+          }
+      }
+  }
+
   // A time average lengthened until its mean is pinned down (AveragingPlan, as time_average runs it),
   // on series 1 + 0.05 x_t with x_t the AR(1) process above (phi 0.8), whose mean 1 is known and whose
   // relative standard error over n values is 0.05 sqrt(var_n) from the closed form: 0.25/sqrt(n) for
