@@ -83,7 +83,9 @@ namespace servodrift
                       "stands in. [-]");
     prm.declare_entry("Field time step Courant number", "1", Patterns::Double(0.05, 50),
                       "Field level, time average: the time step, constant, at this largest cell Courant "
-                      "number of the fields it starts from. [1]");
+                      "number of the fields it starts from. The means do not depend on it (1, 0.5 and 0.25 "
+                      "agree within their standard errors); a smaller one needs proportionally more `Field "
+                      "time steps', or the first window may not span the flow's cycle (doc/validation.md). [1]");
     prm.declare_entry("Field time step iterations", "50", Patterns::Integer(1, 100000),
                       "Field level, time average: the SIMPLEC iterations of a time step at most, to bring its "
                       "equations to scaled residuals of 1e-4. Most steps take 2-15; a step the cap stops is "
