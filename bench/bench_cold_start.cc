@@ -12,6 +12,7 @@
 #include "flow/pilot_field_cases.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <set>
@@ -128,20 +129,23 @@ int main(int argc, char **argv)
       const std::vector<double> r = chain.solve(s.gap, s.pressure_difference);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (r[flag] == flags::not_converged && r[averaged_time] > 0)
-        std::printf("FAILED (flag 2): the mean of its time average over %.3g s is too uncertain, C_d %.5f +- %.5f "
-                    "(spread %.5f), F %.5f +- %.5f N (spread %.5f), %.0f steps at the iteration cap, %.1f s\n",
+        std::printf("FAILED (flag 2): the mean of its time average over %.3g s is not used (stderr says why), C_d %.5f "
+                    "+- %.5f (spread %.5f), F %.5f +- %.5f N (spread %.5f), %.0f steps at the iteration cap, "
+                    "decorrelation lag %.0f steps, %.1f s\n",
                     r[averaged_time], r[averaged_discharge_coefficient], r[discharge_coefficient_uncertainty],
                     r[discharge_coefficient_spread], r[averaged_flapper_force], r[flapper_force_uncertainty],
-                    r[flapper_force_spread], r[unconverged_steps], seconds);
+                    r[flapper_force_spread], r[unconverged_steps], r[decorrelation_steps], seconds);
       else if (r[flag] == flags::not_converged)
         std::printf("FAILED (flag 2) after %.1f s\n", seconds);
       else if (r[flag] == flags::time_averaged)
         std::printf("no steady solution: time average (flag 5) over %.3g s, %.0f iterations, %.1f s, C_d %.5f +- %.5f "
                     "(spread %.5f), F %.5f +- %.5f N (spread %.5f) (standard errors of the means; spreads: standard "
-                    "deviations), %.0f averaged steps at the iteration cap\n",
+                    "deviations), %.0f averaged steps at the iteration cap, decorrelation lag %.0f steps of %.0f "
+                    "averaged\n",
                     r[averaged_time], r[iterations], seconds, r[discharge_coefficient],
                     r[discharge_coefficient_uncertainty], r[discharge_coefficient_spread], r[flapper_force],
-                    r[flapper_force_uncertainty], r[flapper_force_spread], r[unconverged_steps]);
+                    r[flapper_force_uncertainty], r[flapper_force_spread], r[unconverged_steps], r[decorrelation_steps],
+                    std::round(r[averaged_time] / r[time_step]));
       else
         std::printf("converged, %.0f iterations, %.1f s, C_d %.5f, F %.5f N\n", r[iterations], seconds,
                     r[discharge_coefficient], r[flapper_force]);

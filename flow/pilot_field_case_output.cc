@@ -70,11 +70,12 @@ namespace servodrift::flow
         valve, name + "_time_averages",
         "field-level cases whose steady iteration stalled, marched in time (BDF2; URANS if turbulent): the mean and the standard "
         "deviation (spread) over the averaged time, the standard error of the mean (uncertainty, batch means) and the "
-        "averaged steps whose equations the step's iteration cap stopped short of its tolerance "
+        "averaged steps whose equations the step's iteration cap stopped short of its tolerance, the lag at which "
+        "the autocorrelation of C_d or the force first falls to zero (the averaged steps must hold 5 of it) "
         "(Pilot stage/Field time steps, Field averaged fraction, Field time step Courant number, Field time step "
         "iterations); flag 5: the table "
-        "uses the mean, 2: its uncertainty is beyond Field time average uncertainty limit and the reduced-order "
-        "value stands in");
+        "uses the mean, 2: its uncertainty is beyond Field time average uncertainty limit, more than a tenth of its "
+        "steps were capped or its window does not span 5 lags, and the reduced-order value stands in");
       doc.columns.insert(doc.columns.end(), {"discharge_coefficient[1]",
                      "discharge_coefficient_spread[1]",
                      "discharge_coefficient_uncertainty[1]",
@@ -84,6 +85,7 @@ namespace servodrift::flow
                      "time_step[s]",
                      "averaged_time[s]",
                      "unconverged_steps[1]",
+                     "decorrelation_steps[1]",
                      "flag[1]"});
       for (const auto &r : records)
         if (r[averaged_time] > 0)
@@ -92,7 +94,8 @@ namespace servodrift::flow
                               format_cell(r[discharge_coefficient_uncertainty]), format_cell(r[averaged_flapper_force]),
                               format_cell(r[flapper_force_spread]), format_cell(r[flapper_force_uncertainty]),
                               format_cell(r[time_step]), format_cell(r[averaged_time]),
-                              format_cell(r[unconverged_steps]), format_cell(r[flag])});
+                              format_cell(r[unconverged_steps]), format_cell(r[decorrelation_steps]),
+                              format_cell(r[flag])});
       write_file_atomically(flow_directory(valve) + "/" + name + "_time_averages" + variant + ".csv", doc.text());
     }
   } // namespace

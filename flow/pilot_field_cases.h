@@ -56,6 +56,7 @@ namespace servodrift::flow
       averaged_time,
       time_step,
       unconverged_steps, ///< of the averaged steps: those the step's iteration cap stopped (TimeAverage)
+      decorrelation_steps, ///< the lag at which C_d's or the force's autocorrelation first falls to zero
       record_length
     };
   } // namespace case_record

@@ -233,6 +233,7 @@ namespace servodrift::flow
     record[averaged_time] = a.averaged_time;
     record[time_step] = a.time_step;
     record[unconverged_steps] = a.unconverged_steps;
+    record[decorrelation_steps] = a.decorrelation_steps;
     if (!steps_converged(a))
       {
         std::cerr << "servodrift: warning: " << where << ": " << a.unconverged_steps << " of its " << a.averaged_steps
@@ -247,6 +248,16 @@ namespace servodrift::flow
       std::cerr << "servodrift: note: " << where << ": " << a.unconverged_steps << " of its " << a.averaged_steps
                 << " averaged time steps stopped at the step's iteration cap (`Pilot stage/Field time step "
                    "iterations') short of its tolerance\n";
+    if (!window_spans_motion(a))
+      {
+        std::cerr << "servodrift: warning: " << where << ": its " << a.averaged_steps
+                  << " averaged time steps do not span its flow's motion (the autocorrelation of C_d or the force "
+                     "falls to zero only after "
+                  << a.decorrelation_steps << " steps; " << lags_per_window
+                  << " times that are needed for its uncertainty to hold) within `Pilot stage/Field time steps "
+                     "limit': listed in flow/*_time_averages.csv, not used\n";
+        return false;
+      }
     // the tables want the mean (the valve does not follow a jet or cavity cycling at 0.1-1 MHz):
     // it stands for the case if the run pins it down, whatever the unsteadiness (the spread)
     const double limit = valve.pilot.field_time_average_uncertainty_limit;

@@ -82,6 +82,35 @@ namespace servodrift::flow
     return means.standard_deviation() * std::sqrt(1.0 / double(batches - 1));
   }
 
+  std::size_t decorrelation_lag(const std::vector<double> &series)
+  {
+    const std::size_t n = series.size();
+    if (n < 3)
+      return 0;
+    RunningMoments moments;
+    for (double x : series)
+      moments.add(x);
+    if (!(moments.m2 > 0))
+      return 0;
+    // (the sum's sign is the autocorrelation's, whichever normalisation)
+    for (std::size_t lag = 1; lag < n; ++lag)
+      {
+        double sum = 0;
+        for (std::size_t i = 0; i + lag < n; ++i)
+          sum += (series[i] - moments.mean) * (series[i + lag] - moments.mean);
+        if (sum <= 0)
+          return lag;
+      }
+    return n;
+  }
+
+  bool window_spans_motion(const TimeAverage &a)
+  {
+    const bool steady = a.discharge_coefficient_spread <= steady_spread * std::abs(a.mean.discharge_coefficient) &&
+                        a.flapper_force_spread <= steady_spread * std::abs(a.mean.flapper_force);
+    return steady || a.averaged_steps >= lags_per_window * std::size_t(a.decorrelation_steps);
+  }
+
   bool steps_converged(const TimeAverage &a)
   {
     return a.unconverged_steps <= unconverged_steps_limit * a.averaged_steps;
@@ -94,12 +123,20 @@ namespace servodrift::flow
     , limit(limit_)
   {}
 
-  bool AveragingPlan::lengthen(double error)
+  bool AveragingPlan::lengthen(double error, unsigned int steps_needed)
   {
-    if (error <= limit || planned_steps >= most_steps)
+    const bool pinned = error <= limit, spanned = averaged() >= steps_needed;
+    if ((pinned && spanned) || planned_steps >= most_steps)
       return false;
-    const double ratio = limit > 0 ? error / limit : std::numeric_limits<double>::infinity();
-    const double asked = 1.1 * std::min(std::max(ratio * ratio, 1.0), 1e9) * averaged();
+    double asked = 0;
+    if (!pinned)
+      {
+        const double ratio = limit > 0 ? error / limit : std::numeric_limits<double>::infinity();
+        asked = 1.1 * std::min(std::max(ratio * ratio, 1.0), 1e9) * averaged();
+      }
+    // a window that does not span the motion: its error estimate does not hold yet, whatever it says
+    if (!spanned)
+      asked = std::max(asked, 1.1 * steps_needed);
     // (less a millionth of a step: 1.1 x 4 x 200 is 880 and a rounding error, not 881)
     planned_steps = static_cast<unsigned int>(std::min<double>(most_steps, transient_steps + std::ceil(asked - 1e-6)));
     return true;
@@ -117,6 +154,17 @@ namespace servodrift::flow
     std::vector<double> C_d_series, force_series; // over the averaged steps, for the standard errors
     RunningFields fields;
     PilotFieldResult &m = a.mean;
+    // the window's spreads, means and decorrelation lag into a; returns the averaged steps its
+    // motion needs (0: spanned)
+    auto motion = [&] {
+      a.discharge_coefficient_spread = C_d.standard_deviation();
+      a.flapper_force_spread = force.standard_deviation();
+      m.discharge_coefficient = C_d.mean, m.flapper_force = force.mean;
+      a.decorrelation_steps = static_cast<unsigned int>(
+        std::max(decorrelation_lag(C_d_series), has_flapper ? decorrelation_lag(force_series) : std::size_t(0)));
+      a.averaged_steps = plan.averaged();
+      return window_spans_motion(a) ? 0u : lags_per_window * a.decorrelation_steps;
+    };
     auto relative_errors = [&] {
       a.discharge_coefficient_uncertainty = batch_means_standard_error(C_d_series, mean_batches);
       a.flapper_force_uncertainty = batch_means_standard_error(force_series, mean_batches);
@@ -149,17 +197,15 @@ namespace servodrift::flow
         // that is not used; the capped fraction of a stationary run does not fall with its length)
         if (plan.at_end(step))
           {
-            a.averaged_steps = plan.averaged();
+            const unsigned int steps_needed = motion();
             if (steps_converged(a))
-              plan.lengthen(relative_errors());
+              plan.lengthen(relative_errors(), steps_needed);
           }
       }
     m.flow_rate = Q.mean, m.discharge_coefficient = C_d.mean, m.reynolds_number = Re.mean;
     m.flapper_force = force.mean, m.land_force = land.mean, m.jet_force = jet.mean, m.bore_pressure = bore.mean;
-    a.discharge_coefficient_spread = C_d.standard_deviation();
-    a.flapper_force_spread = force.standard_deviation();
+    motion();
     relative_errors();
-    a.averaged_steps = plan.averaged();
     a.averaged_time = a.averaged_steps * a.time_step;
     a.mean_fields = fields.result();
     return a;

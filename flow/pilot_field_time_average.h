@@ -38,6 +38,9 @@ namespace servodrift::flow
     /// tolerance (a cavity collapsing within a step): a few are harmless in a mean over thousands,
     /// many say the time step is too long for the flow.
     unsigned int unconverged_steps = 0;
+    /// The larger decorrelation_lag of the averaged C_d and flapper force series [steps]: batch
+    /// means hold if the averaged steps are at least lags_per_window times it (window_spans_motion).
+    unsigned int decorrelation_steps = 0;
     /// The cell and face fields averaged over the averaged time (velocities, pressure, fluxes, the
     /// turbulence model's fields, the liquid fraction; a cell cavitates if its mean liquid fraction is
     /// below 1), for the VTU of the mean flow.
@@ -54,6 +57,28 @@ namespace servodrift::flow
   /// Whether the average's steps solved their equations: at most unconverged_steps_limit of its
   /// averaged steps stopped by the cap.
   bool steps_converged(const TimeAverage &a);
+
+  /// The lag (in values) at which the sample autocorrelation of a series first falls to zero or
+  /// below: a quarter of the period of a cycle, a few correlation times of noise, about a third of
+  /// the length of a trend (a window that holds less than a cycle); 0 for fewer than three values or
+  /// a constant series.
+  std::size_t decorrelation_lag(const std::vector<double> &series);
+
+  /// The averaged steps must hold this many decorrelation lags for batch means to hold: with 10
+  /// batches each is then at least half a lag long and batches two apart a lag apart, and a cycle is
+  /// spanned 1.25 times (its quarter period times 5). Averaged over less than that (a smaller Courant number with the same
+  /// `Field time steps'), a window can hold half a cycle, whose batch means follow a trend and
+  /// claim a mean several times better than it is (doc/validation.md).
+  constexpr unsigned int lags_per_window = 5;
+
+  /// A series whose standard deviation is at most this fraction of its mean does not move beyond
+  /// what a step's iterations leave (they stop at scaled residuals of 1e-4): a steady flow marched,
+  /// whose window needs to span nothing.
+  constexpr double steady_spread = 1e-4;
+
+  /// Whether the averaged time spans the flow's slowest motion: at least lags_per_window times its
+  /// decorrelation_steps, or spreads within steady_spread of the means.
+  bool window_spans_motion(const TimeAverage &a);
 
   /// The standard error of the mean of a correlated series by batch means: the series cut into
   /// `batches' consecutive batches (at most one per value), the sample standard deviation of their
@@ -79,9 +104,11 @@ namespace servodrift::flow
     bool averages(unsigned int step) const { return step >= transient_steps; }
     /// Whether step is the plan's last and the plan could still grow: then call lengthen.
     bool at_end(unsigned int step) const { return step + 1 == planned_steps && planned_steps < most_steps; }
-    /// With the mean's relative error at the end of the plan: lengthens the plan if the error
-    /// exceeds the limit (a NaN error too); returns whether it did.
-    bool lengthen(double relative_error);
+    /// With the mean's relative error at the end of the plan and the averaged steps the window needs
+    /// for that error to hold (lags_per_window decorrelation lags; 0: none): lengthens the plan if
+    /// the error exceeds the limit (a NaN error too) or the window is shorter than that; returns
+    /// whether it did.
+    bool lengthen(double relative_error, unsigned int steps_needed = 0);
 
   private:
     unsigned int transient_steps, planned_steps, most_steps;
@@ -92,7 +119,8 @@ namespace servodrift::flow
   /// `Field time step Courant number'), averaging the last `Field averaged fraction' of them. While
   /// the relative standard error of the mean C_d or flapper force exceeds `Field time average
   /// uncertainty limit', the averaged time is lengthened by AveragingPlan, up to `Field time
-  /// steps limit' steps in all (the start's transient is cut once); not if more than
+  /// steps limit' steps in all (the start's transient is cut once), and while the averaged time
+  /// does not span the flow's slowest motion (window_spans_motion); not if more than
   /// unconverged_steps_limit of the steps averaged so far were capped (steps_converged). Throws std::runtime_error if a
   /// step diverges, std::invalid_argument if nothing flows. `each_step', if set, sees every step's
   /// results and the steps planned so far (a progress report).
