@@ -66,9 +66,9 @@ namespace servodrift::flow
 
   /// The averaged steps must hold this many decorrelation lags for batch means to hold: with 10
   /// batches each is then at least half a lag long and batches two apart a lag apart, and a cycle is
-  /// spanned 1.25 times (its quarter period times 5). Averaged over less than that (a smaller Courant number with the same
-  /// `Field time steps'), a window can hold half a cycle, whose batch means follow a trend and
-  /// claim a mean several times better than it is (doc/validation.md).
+  /// spanned 1.25 times (its quarter period times 5). Averaged over less than that (a smaller
+  /// Courant number with the same `Field time steps'), a window can hold half a cycle, whose batch
+  /// means follow a trend and claim a mean several times better than it is (doc/validation.md).
   constexpr unsigned int lags_per_window = 5;
 
   /// A series whose standard deviation is at most this fraction of its mean does not move beyond
@@ -121,8 +121,8 @@ namespace servodrift::flow
   /// uncertainty limit', the averaged time is lengthened by AveragingPlan, up to `Field time
   /// steps limit' steps in all (the start's transient is cut once), and while the averaged time
   /// does not span the flow's slowest motion (window_spans_motion); not if more than
-  /// unconverged_steps_limit of the steps averaged so far were capped (steps_converged). Throws std::runtime_error if a
-  /// step diverges, std::invalid_argument if nothing flows. `each_step', if set, sees every step's
+  /// unconverged_steps_limit of the steps averaged so far were capped (steps_converged). Throws
+  /// std::runtime_error if a step diverges, std::invalid_argument if nothing flows. `each_step', if set, sees every step's
   /// results and the steps planned so far (a progress report).
   TimeAverage time_average(
     PilotField &field, double pressure_difference, const PilotStageParameters &settings,
