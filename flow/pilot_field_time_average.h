@@ -85,7 +85,7 @@ namespace servodrift::flow
   /// means over sqrt(batches); 0 for fewer than two. Successive steps of a marched case are strongly
   /// correlated (a cavity's cycle spans hundreds of steps), so the values' own standard deviation
   /// over sqrt(n) would understate the error; batches longer than the correlation time are nearly
-  /// independent (checked on AR(1) series, pilot_field_time_average_test.cc).
+  /// independent (checked on AR(1) series, time_average_statistics_test.cc).
   double batch_means_standard_error(const std::vector<double> &series, std::size_t batches);
 
   /// The plan of a time average's steps: `first' steps, the last `averaged_fraction' of them averaged
