@@ -156,6 +156,18 @@ namespace servodrift::flow
     return r;
   }
 
+  double KEpsilonModel::realizable_time_scale(double time_scale, double strain) const
+  {
+    // Durbin (1996): mu_t <= a rho k/(sqrt 6 |S|) keeps the normal stresses of the Boussinesq form
+    // >= 0 where the strain is strong (the orifice's entry, the jet's stagnation on the flapper),
+    // which the models violate: there their production, and with it mu_t, runs away. A log layer's
+    // k/e = 1/(sqrt(2 C_mu) |S|) (|S| = sqrt(S_ij S_ij)) stays 13 % below the bound at a = 0.6.
+    if (settings.realizability_coefficient <= 0)
+      return time_scale;
+    return std::min(time_scale,
+                    settings.realizability_coefficient / (std::sqrt(6.0) * C_mu * std::max(strain, vanishing)));
+  }
+
   void KEpsilonModel::store(FlowFields &f) const
   {
     f.turbulent = true;

@@ -48,6 +48,9 @@ namespace servodrift::flow
     virtual void constrain_epsilon(FvMatrix &) {}
     /// The model's mu_t of cell c with the strain rate |S| (before the limit and the relaxation).
     virtual double model_viscosity(std::size_t c, double strain) const = 0;
+    /// A turbulence time scale T of mu_t = rho C_mu k T under Durbin's realizability bound,
+    /// min(T, a/(sqrt 6 C_mu |S|)) (a = `Realizability coefficient`, 0: no bound), at the strain rate |S|.
+    double realizable_time_scale(double time_scale, double strain) const;
 
     FlowSolverParameters settings;
     std::vector<double> k, epsilon;      ///< per cell: k [m^2/s^2], epsilon (e~ for Launder-Sharma) [m^2/s^3]
@@ -81,7 +84,8 @@ namespace servodrift::flow
   };
 
   /// Launder and Sharma's low-Reynolds-number k-epsilon: e is e~ (zero at walls),
-  ///   mu_t = rho C_mu f_mu k^2/e~,  f_mu = exp(-3.4/(1 + Re_t/50)^2),  f_2 = 1 - 0.3 exp(-Re_t^2),
+  ///   mu_t = rho C_mu k T,  T = min(f_mu k/e~, a/(sqrt 6 C_mu |S|)) (Durbin's bound on mu_t, as above),
+  ///   f_mu = exp(-3.4/(1 + Re_t/50)^2),  f_2 = 1 - 0.3 exp(-Re_t^2),
   ///   D = 2 mu |grad sqrt k|^2,  E = 2 mu nu_t |grad grad u|^2,  Re_t = rho k^2/(mu e~).
   class KEpsilonLaunderSharma : public KEpsilonModel
   {

@@ -72,13 +72,7 @@ namespace servodrift::flow
     const double y = wall_distance[c], Re_y = rho * std::sqrt(k[c]) * y / mu;
     const double l_mu = C_l * y * (1 - std::exp(-Re_y / A_mu));
     const double lambda = outer_weight(Re_y);
-    // Durbin's realizability bound on the time scale, T <= alpha/(sqrt 6 C_mu |S|), alpha = 0.6: the
-    // normal stresses of the Boussinesq form stay >= 0 where the strain is strong (the orifice's
-    // entry, the jet's stagnation on the flapper), which the standard model violates
-    double time_scale = k[c] / epsilon[c];
-    if (settings.realizability_coefficient > 0)
-      time_scale = std::min(time_scale, settings.realizability_coefficient /
-                                          (std::sqrt(6.0) * C_mu * std::max(strain, vanishing)));
-    return lambda * rho * C_mu * k[c] * time_scale + (1 - lambda) * rho * C_mu * std::sqrt(k[c]) * l_mu;
+    return lambda * rho * C_mu * k[c] * realizable_time_scale(k[c] / epsilon[c], strain) +
+           (1 - lambda) * rho * C_mu * std::sqrt(k[c]) * l_mu;
   }
 } // namespace servodrift::flow

@@ -7,8 +7,10 @@ foreach(name PilotFieldStage.OrificePathOverTemperatureKeepsTheAnswer Calibratio
              PilotFieldChain.SSTOrificeGoesOnFromKEpsilonWhereItDivergesAlone
              TurbulenceValidation/BackwardFacingStep.ReattachmentLength/TwoLayer
              TurbulenceValidation/BackwardFacingStep.ReattachmentLength/SST
+             TurbulenceValidation/BackwardFacingStep.ReattachmentLength/LaunderSharma
              TurbulenceValidation/ImpingingJet.WallJetProfiles/TwoLayer
              TurbulenceValidation/ImpingingJet.WallJetProfiles/SST
+             TurbulenceValidation/ImpingingJet.WallJetProfiles/LaunderSharma
              TurbulenceValidation/SharpEdgedOrifice.LichtarowiczAndNurick/TwoLayer
              TurbulenceValidation/SharpEdgedOrifice.LichtarowiczAndNurick/SST)
   set_tests_properties(${name} PROPERTIES LABELS "verification;slow")

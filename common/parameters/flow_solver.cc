@@ -80,11 +80,11 @@ namespace servodrift
                       "liquid's. The real ratio is about 1e-5; at 1e-3 the vapour's momentum is still "
                       "negligible and the liquid fraction stays well conditioned. [1]");
     prm.declare_entry("Realizability coefficient", "0.6", Patterns::Double(0, 1),
-                      "Two-layer k-epsilon: Durbin's bound on the turbulence time scale, k/epsilon <= "
-                      "alpha/(sqrt(6) C_mu |S|), which keeps the modelled normal stresses >= 0 where the strain "
+                      "k-epsilon models (two-layer and Launder-Sharma): Durbin's bound on the turbulence time "
+                      "scale, k/epsilon <= alpha/(sqrt(6) C_mu |S|), which keeps the modelled normal stresses >= 0 where the strain "
                       "is strong (the orifice's sharp entry, the jet's stagnation on the flapper); without it "
-                      "the standard model's production runs away there. 0 turns it off (the textbook "
-                      "standard model). [1]");
+                      "the models' production runs away there, and Launder-Sharma's hot cases cycle. 0 turns it "
+                      "off (the textbook models). [1]");
     prm.declare_entry("Acceleration depth", "10", Patterns::Integer(0, 50),
                       "Anderson acceleration of the SIMPLEC iteration: each new iterate is the combination of "
                       "the last this many SIMPLEC updates whose change is smallest in the least-squares sense "

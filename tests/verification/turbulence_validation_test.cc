@@ -38,7 +38,21 @@ namespace servodrift::flow
     using Turbulence = FlowSolverParameters::Turbulence;
     const std::string source_dir = SERVODRIFT_SOURCE_DIR;
 
-    const char *model_name(Turbulence t) { return t == Turbulence::k_epsilon ? "k-epsilon (two-layer)" : "k-omega SST"; }
+    const char *model_name(Turbulence t)
+    {
+      return t == Turbulence::k_epsilon                  ? "k-epsilon (two-layer)"
+             : t == Turbulence::k_epsilon_launder_sharma ? "k-epsilon (Launder-Sharma)"
+                                                         : "k-omega SST";
+    }
+    /// The test's name for each model.
+    std::string test_name(const ::testing::TestParamInfo<Turbulence> &info)
+    {
+      return info.param == Turbulence::k_epsilon                  ? "TwoLayer"
+             : info.param == Turbulence::k_epsilon_launder_sharma ? "LaunderSharma"
+                                                                  : "SST";
+    }
+    const auto every_model =
+      ::testing::Values(Turbulence::k_epsilon, Turbulence::k_epsilon_launder_sharma, Turbulence::k_omega_sst);
 
     /// The numeric rows of a data file (lines starting with '#' skipped).
     std::vector<std::vector<double>> read_table(const std::string &name)
@@ -164,15 +178,15 @@ namespace servodrift::flow
     std::printf("backward-facing step, %s: x_r/H %.3f (measured 6.26 +- 0.10, %+.1f %%), %zu cells, %s, %u iterations\n",
                 model_name(GetParam()), reattachment / H, 100 * (reattachment / (6.26 * H) - 1), mesh.n_cells(),
                 ("bottom wall " + largest_y_plus(solver, mesh, {"bottom"}) + ", all walls " + largest_y_plus(solver, mesh, {"bottom", "step", "upstream_bottom", "top"})).c_str(), report.iterations);
-    // a credible model within 10 % (0.6 H, six times the measurement's +- 0.10 H)
-    EXPECT_NEAR(reattachment / (6.26 * H), 1, 0.10);
+    // a credible model within 10 % (0.6 H, six times the measurement's +- 0.10 H). Launder-Sharma
+    // reattaches 10.9 % short, beyond that (doc/validation.md's table says so); it is held within
+    // 15 %, so that a worse answer shows
+    const bool credible = GetParam() != Turbulence::k_epsilon_launder_sharma;
+    EXPECT_NEAR(reattachment / (6.26 * H), 1, credible ? 0.10 : 0.15);
   }
 
-  // Launder-Sharma's k-epsilon is left out: it stalls on this case (at iteration 2 200, k's residual
-  // at 2e-4) as on the developed pipe the jet needs (doc/validation.md; issue 28)
   INSTANTIATE_TEST_SUITE_P(TurbulenceValidation, BackwardFacingStep,
-                           ::testing::Values(Turbulence::k_epsilon, Turbulence::k_omega_sst),
-                           [](const auto &info) { return info.param == Turbulence::k_epsilon ? "TwoLayer" : "SST"; });
+                           every_model, test_name);
 
   // ---- round jet impinging on a flat plate -----------------------------------------------------
 
@@ -254,16 +268,22 @@ namespace servodrift::flow
     inlet.turbulence_profile = [&](const Vector2 &x) {
       return std::make_pair(interpolate(inflow.k, x.y()), interpolate(inflow.epsilon, x.y()));
     };
-    SimplecSolver jet(mesh,
-                      {rho, rho * U * D / Re},
-                      {{"inlet", inlet},
-                       {"pipe", BoundaryCondition::wall()},
-                       {"lip", BoundaryCondition::wall()},
-                       {"entrainment", BoundaryCondition::pressure_outlet(0)},
-                       {"plate", BoundaryCondition::wall()},
-                       {"outlet", BoundaryCondition::pressure_outlet(0)},
-                       {"axis", BoundaryCondition::axis()}},
-                      settings(GetParam()));
+    const std::map<std::string, BoundaryCondition> bc{{"inlet", inlet},
+                                                      {"pipe", BoundaryCondition::wall()},
+                                                      {"lip", BoundaryCondition::wall()},
+                                                      {"entrainment", BoundaryCondition::pressure_outlet(0)},
+                                                      {"plate", BoundaryCondition::wall()},
+                                                      {"outlet", BoundaryCondition::pressure_outlet(0)},
+                                                      {"axis", BoundaryCondition::axis()}};
+    SimplecSolver jet(mesh, {rho, rho * U * D / Re}, bc, settings(GetParam()));
+    if (GetParam() == Turbulence::k_epsilon_launder_sharma)
+      {
+        // from the two-layer model's solution, as the pilot stage's chain starts Launder-Sharma
+        // where it stalls alone
+        SimplecSolver start(mesh, {rho, rho * U * D / Re}, bc, settings(Turbulence::k_epsilon));
+        start.solve();
+        jet.initialize_from(start);
+      }
     const SolveReport report = jet.solve();
 
     std::vector<double> speed(mesh.n_cells()), speed_b(mesh.n_faces(), 0.0);
@@ -314,8 +334,7 @@ namespace servodrift::flow
   }
 
   INSTANTIATE_TEST_SUITE_P(TurbulenceValidation, ImpingingJet,
-                           ::testing::Values(Turbulence::k_epsilon, Turbulence::k_omega_sst),
-                           [](const auto &info) { return info.param == Turbulence::k_epsilon ? "TwoLayer" : "SST"; });
+                           every_model, test_name);
 
   // ---- the sharp-edged orifice -----------------------------------------------------------------
 
@@ -326,7 +345,10 @@ namespace servodrift::flow
   // Cavitating (the cavitation model on, the oil at 40 degC, dp = 15.45 and 20.6 MPa): Nurick (1976),
   // C_d = C_c sqrt(K), K = (p_1 - p_v)/(p_1 - p_2), with the sharp-edged contraction C_c = 0.61;
   // tolerance 5 %. The orifice's mesh puts the wall's first cells at y+ up to 16 (Re_0 5 000) and 33
-  // (20 000) at the sharp edge: resolved for the two-layer model, not for SST.
+  // (20 000) at the sharp edge: resolved for the two-layer model, not for SST. Launder-Sharma is left
+  // out: it stalls single phase at both Reynolds numbers (continuity 0.3-0.95) and cavitating at
+  // 15.45 MPa (continuity 5e-6 against 1e-6), from rest and from the two-layer model's solution
+  // alike (doc/validation.md).
   class SharpEdgedOrifice : public ::testing::TestWithParam<Turbulence>
   {};
 
@@ -380,6 +402,5 @@ namespace servodrift::flow
   }
 
   INSTANTIATE_TEST_SUITE_P(TurbulenceValidation, SharpEdgedOrifice,
-                           ::testing::Values(Turbulence::k_epsilon, Turbulence::k_omega_sst),
-                           [](const auto &info) { return info.param == Turbulence::k_epsilon ? "TwoLayer" : "SST"; });
+                           ::testing::Values(Turbulence::k_epsilon, Turbulence::k_omega_sst), test_name);
 } // namespace servodrift::flow
