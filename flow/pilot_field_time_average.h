@@ -48,10 +48,10 @@ namespace servodrift::flow
   };
 
   /// The largest fraction of the averaged steps that the step's iteration cap may stop short of their
-  /// tolerance for the mean to stand for the case. Hot cavitating nozzles (SST, Launder-Sharma) leave
-  /// up to 3.3 % of their steps capped, and a cap four times higher moved their means by less than their
-  /// standard errors; the laminar 60 um gap marched at Courant 4 left 44 % capped and its C_d 16 %
-  /// below Courant 1's (doc/validation.md).
+  /// tolerance for the mean to stand for the case. Hot cavitating nozzles (SST; Launder-Sharma without
+  /// Durbin's bound) leave up to 3.3 % of their steps capped, and a cap four times higher moved their
+  /// means by less than their standard errors; the laminar 60 um gap marched at Courant 4 left 44 %
+  /// capped and its C_d 16 % below Courant 1's (doc/validation.md).
   constexpr double unconverged_steps_limit = 0.1;
 
   /// Whether the average's steps solved their equations: at most unconverged_steps_limit of its
