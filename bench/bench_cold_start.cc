@@ -88,6 +88,9 @@ int main(int argc, char **argv)
     {"Launder-Sharma orifice at 120 degC, 1.03 MPa", orifice, Turbulence::k_epsilon_launder_sharma, 1, 0, 1.03e6, true, 0.6, 120},
     {"Launder-Sharma 40 um at 120 degC, 3.09 MPa", nozzle, Turbulence::k_epsilon_launder_sharma, 1, 40e-6, 3.09e6, true, 0.6, 120},
     {"Launder-Sharma 40 um at 120 degC, 3.09 MPa, single phase", nozzle, Turbulence::k_epsilon_launder_sharma, 1, 40e-6, 3.09e6, false, 0.6, 120},
+    {"Launder-Sharma 50 um at 110 degC, 10.3 MPa", nozzle, Turbulence::k_epsilon_launder_sharma, 1, 50e-6, 10.3e6, true, 0.6, 110},
+    {"Launder-Sharma 50 um at 110 degC, 10.3 MPa, single phase", nozzle, Turbulence::k_epsilon_launder_sharma, 1, 50e-6, 10.3e6, false, 0.6, 110},
+    {"Launder-Sharma 50 um at 110 degC, 10.3 MPa, single phase, resolution 2", nozzle, Turbulence::k_epsilon_launder_sharma, 2, 50e-6, 10.3e6, false, 0.6, 110},
   };
   std::set<std::size_t> chosen;
   std::vector<std::string> settings{"Output/Progress=none", "Output/Flow fields=none"};
