@@ -48,6 +48,9 @@ namespace servodrift::flow
     virtual void constrain_epsilon(FvMatrix &) {}
     /// The model's mu_t of cell c with the strain rate |S| (before the limit and the relaxation).
     virtual double model_viscosity(std::size_t c, double strain) const = 0;
+    /// Whether the rate e/k of the epsilon equation takes the k the k equation was linearised with
+    /// (the iteration's start) instead of the k just solved; the same at the fixed point.
+    virtual bool epsilon_rate_from_linearised_k() const { return false; }
     /// A turbulence time scale T of mu_t = rho C_mu k T under Durbin's realizability bound,
     /// min(T, a/(sqrt 6 C_mu |S|)) (a = `Realizability coefficient`, 0: no bound), at the strain rate |S|.
     double realizable_time_scale(double time_scale, double strain) const;
@@ -94,6 +97,12 @@ namespace servodrift::flow
 
   protected:
     double wall_epsilon(unsigned int) const override { return 0; }
+    /// Launder-Sharma's k just solved can fall below its floor in a cell where e~ is large (the
+    /// nozzle bore's exit, a jet's edge); e~ over the floor then made that cell's e~ equation so
+    /// stiff that its hot nozzle cases stalled and their marched steps hit the iteration cap
+    /// (doc/changes.md). The two-layer model keeps the k just solved: with the linearised one its
+    /// results and convergence move where its cavitating 10 um states are not unique.
+    bool epsilon_rate_from_linearised_k() const override { return true; }
     void wall_terms(const std::vector<Vector2> &grad_u, const std::vector<Vector2> &grad_v, double k_floor,
                     double epsilon_floor) override;
     double model_viscosity(std::size_t c, double strain) const override;
