@@ -60,9 +60,9 @@ namespace servodrift::flow
   // cells at the nozzle bore's exit where e~ is large, and the stiffness of e~ over the floor stalled
   // the case (continuity 0.09) and its march (617 averaged steps at the iteration cap; doc/changes.md).
   // Now a converged row. Its C_d within 5 % of the two-layer k-epsilon's at the same case: the
-  // tolerance every credible model holds against the orifice experiments (doc/validation.md); the
-  // cavity in the gap sets C_d at this pressure for every model (-1.5 % measured). The force is
-  // not compared: it is where the models differ (the model-form band, up to 7 % at the null).
+  // tolerance every credible model holds against the orifice experiments (doc/validation.md); at
+  // this pressure the cavity in the gap leaves C_d little to the model (-1.5 % measured). The force
+  // is not compared: it is where the models differ (the model-form band, up to 7 % at the null).
   TEST(PilotFieldChain, LaunderSharmaHotNozzleConvergesFromRest)
   {
     using namespace case_record;

@@ -338,7 +338,7 @@ namespace servodrift::flow
   // C_d = C_c sqrt(K), K = (p_1 - p_v)/(p_1 - p_2), with the sharp-edged contraction C_c = 0.61;
   // tolerance 5 %. The orifice's mesh puts the wall's first cells at y+ up to 16 (Re_0 5 000) and 33
   // (20 000) at the sharp edge: resolved for the two-layer model, not for SST. Launder-Sharma is left
-  // out: it stalls single phase (continuity 0.07 at Re_0 5 000) and cavitating at 15.45 MPa
+  // out: it stalls single phase (continuity 0.04 at Re_0 5 000) and cavitating at 15.45 MPa
   // (continuity 5e-6 against 1e-6, from rest and from the two-layer model's solution alike;
   // doc/validation.md).
   class SharpEdgedOrifice : public ::testing::TestWithParam<Turbulence>
