@@ -11,7 +11,10 @@ foreach(name PilotFieldStage.OrificePathOverTemperatureKeepsTheAnswer Calibratio
              TurbulenceValidation/ImpingingJet.WallJetProfiles/TwoLayer
              TurbulenceValidation/ImpingingJet.WallJetProfiles/SST
              TurbulenceValidation/ImpingingJet.WallJetProfiles/LaunderSharma
-             TurbulenceValidation/SharpEdgedOrifice.LichtarowiczAndNurick/TwoLayer
-             TurbulenceValidation/SharpEdgedOrifice.LichtarowiczAndNurick/SST)
+             TurbulenceValidation/SharpEdgedOrifice.Lichtarowicz/TwoLayer
+             TurbulenceValidation/SharpEdgedOrifice.Lichtarowicz/SST
+             TurbulenceValidation/CavitatingOrifice.Nurick/TwoLayer
+             TurbulenceValidation/CavitatingOrifice.Nurick/SST
+             TurbulenceValidation/CavitatingOrifice.Nurick/LaunderSharma)
   set_tests_properties(${name} PROPERTIES LABELS "verification;slow")
 endforeach()

@@ -7,7 +7,7 @@
 // doc/validation.md, "Robustness"). The chain then solves the case with the two-layer k-epsilon
 // (from SST's fields at 10.3 MPa) and starts SST from that solution at the same level. The
 // answer must be SST's own, which the validation test reaches through levels 1.1 apart
-// (turbulence_validation_test.cc, SharpEdgedOrifice): where the orifice cavitates, its C_d is
+// (turbulence_validation_test.cc, CavitatingOrifice): where the orifice cavitates, its C_d is
 // Nurick's C_c sqrt(K) for every model (K = (p_1 - p_v)/dp = 1.02 here, C_c 0.61: 0.6174). So: a
 // converged row (flag 0, not 2), within 5 % of Nurick (the validation's tolerance; SST was -0.2 %
 // there), within 0.5 % of k-epsilon's (both follow Nurick within 0.2 %), and SST's own iterations
