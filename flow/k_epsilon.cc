@@ -119,7 +119,8 @@ namespace servodrift::flow
       level[c] = std::max(k[c], k_level);
     r.k = k_equation.relax(k, alpha, level, scale);
     r.k /= std::max(scale, vanishing);
-    const std::vector<double> k_linearised = epsilon_rate_from_linearised_k() ? k : std::vector<double>{};
+    const bool rate_from_linearised_k = epsilon_rate_from_linearised_k();
+    const std::vector<double> k_linearised = rate_from_linearised_k ? k : std::vector<double>{};
     k_equation.solve(k, settings, "k");
 
     // epsilon: C1 e/k P [+ E] as the source, C2 [f_2] rho e^2/k as an implicit sink
@@ -129,7 +130,7 @@ namespace servodrift::flow
     for (std::size_t c = 0; c < n; ++c)
       {
         const double V = mesh.cell_volume[c];
-        const double kc = std::max(epsilon_rate_from_linearised_k() ? k_linearised[c] : k[c], k_floor);
+        const double kc = std::max(rate_from_linearised_k ? k_linearised[c] : k[c], k_floor);
         const double ratio = std::max(epsilon[c], 0.0) / kc;
         epsilon_equation.diagonal[c] += C2 * destruction_factor[c] * rho * ratio * V;
         epsilon_equation.b[c] += (C1 * ratio * production[c] + epsilon_source[c]) * V;

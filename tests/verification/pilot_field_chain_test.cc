@@ -84,4 +84,37 @@ namespace servodrift::flow
     EXPECT_EQ(r[model], double(FlowSolverParameters::Turbulence::k_epsilon_launder_sharma));
     EXPECT_NEAR(r[discharge_coefficient] / reference[discharge_coefficient], 1, 0.05);
   }
+
+  // RV-1's 10 um gap at 120 degC and 3.09 MPa (the default model, cavitating on), as the flow stage's
+  // chain meets it: from the 20 um gap's fields at the same pressure, which cavitate. Its liquid flow
+  // stays 0.14 MPa above the vapour pressure, so the case does not cavitate (its solve from rest:
+  // no cell below the vapour pressure). Before PilotField's liquid check, the carried state kept a
+  // cavity of 16-23 cells, a steady state of the equilibrium model that marched in time collapses
+  // within a few microseconds, with C_d 1.7-2.3 % above the liquid flow's (doc/validation.md,
+  // "Robustness"; bench_narrow_gap_paths). So: from the neighbour, the same answer as from rest to
+  // 1e-4 (two converged solutions of the same equations: the monitor's 1e-4), neither cavitating.
+  TEST(PilotFieldChain, NarrowGapFromCavitatingNeighbourIsTheLiquidFlow)
+  {
+    using namespace case_record;
+    const double T = 120, h = 10e-6, dp = 3.09e6;
+    const ValveDescription valve = test::valve({"Output/Progress=none", "Output/Flow fields=none"});
+    ASSERT_TRUE(valve.pilot.field_cavitation);
+    const std::vector<double> rest = Chain(valve, PilotGeometry::nozzle_flapper, T).solve(h, dp);
+    Chain chain(valve, PilotGeometry::nozzle_flapper, T);
+    const std::vector<double> wider = chain.solve(20e-6, dp);
+    const std::vector<double> r = chain.solve(h, dp, chain.last_fields());
+    std::printf("10 um, 120 degC, 3.09 MPa: from rest C_d %.5f, F %.5f N, lowest %.4g Pa; from 20 um (cavitating %g) "
+                "C_d %.5f, F %.5f N, lowest %.4g Pa, cavitating %g\n",
+                rest[discharge_coefficient], rest[flapper_force], rest[minimum_absolute_pressure], wider[cavitating],
+                r[discharge_coefficient], r[flapper_force], r[minimum_absolute_pressure], r[cavitating]);
+    ASSERT_EQ(rest[flag], flags::computed);
+    ASSERT_EQ(wider[flag], flags::computed);
+    ASSERT_EQ(r[flag], flags::computed);
+    ASSERT_EQ(wider[cavitating], 1); // the neighbour's cavity is there to be carried
+    EXPECT_EQ(rest[cavitating], 0);
+    EXPECT_EQ(r[cavitating], 0);
+    EXPECT_GT(r[minimum_absolute_pressure], valve.fluid.vapour_pressure);
+    EXPECT_NEAR(r[discharge_coefficient] / rest[discharge_coefficient], 1, 1e-4);
+    EXPECT_NEAR(r[flapper_force] / rest[flapper_force], 1, 1e-4);
+  }
 } // namespace servodrift::flow

@@ -1,0 +1,109 @@
+// Path dependence of a narrow-gap nozzle case (issue 28, item 6; doc/validation.md, "Robustness"):
+// one case of RV-1's default sweep solved on three paths with the default flow model, each in a
+// fresh continuation chain (flow/pilot_field_cases.h's Chain):
+//   rest       the case alone: pressure continuation from rest up to its pressure difference;
+//   neighbour  the flow stage's path: the next larger gap at the same pressure difference first,
+//              then this gap from its fields;
+//   descending the case at the sweep's largest pressure difference first, then down to its own.
+// Prints per path C_d, the flapper force, the cells that cavitate and the lowest absolute
+// pressure, then marches the two continued states in time (`Pilot stage/Field time steps' steps) to
+// see whether they hold. Converged states that differ by more than the solver's tolerance are
+// distinct solutions of the same discrete equations; before PilotField's liquid check the paths
+// from the wider gap and from above kept cavities that collapse when marched (doc/validation.md,
+// "Robustness"). Not a test (tens of seconds).
+//   OMP_THREAD_LIMIT=1 build/bench/bench_narrow_gap_paths [T degC] [gap m] [dp Pa] [neighbour gap m] [parameter=value ...]
+// (defaults 50 degC, 10e-6 m, 3.09e6 Pa, 20e-6 m)
+#include "common/valve_description.h"
+#include "flow/pilot_field.h"
+#include "flow/pilot_field_cases.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using namespace servodrift;
+using namespace servodrift::flow;
+
+namespace
+{
+  void print(const char *path, const std::vector<double> &r, const std::optional<FlowFields> &fields)
+  {
+    using namespace case_record;
+    const std::size_t cavitating =
+      fields ? static_cast<std::size_t>(std::count(fields->cavitating.begin(), fields->cavitating.end(), 1)) : 0;
+    std::printf("%-10s flag %.0f, %5.0f iterations, C_d %.5f, F %.5f N, %4zu cavitating cells, lowest pressure %.4g Pa\n",
+                path, r[flag], r[iterations], r[discharge_coefficient], r[flapper_force], cavitating,
+                r[minimum_absolute_pressure]);
+    std::fflush(stdout);
+  }
+  /// The state marched in time (`Pilot stage/Field time steps' steps of `Field time step Courant
+  /// number'): whether it holds (a stable steady state) or moves to another.
+  void march(const char *path, const ValveDescription &valve, double T, double h, double dp, const FlowFields &start)
+  {
+    PilotField field(valve, PilotGeometry::nozzle_flapper, pilot_field_case(valve, T), h);
+    field.set_fields(start);
+    const double dt = field.courant_time_step(valve.pilot.field_time_step_courant);
+    PilotFieldResult r;
+    unsigned int capped = 0;
+    for (unsigned int step = 0; step < valve.pilot.field_time_steps; ++step)
+      {
+        r = field.advance(dp, dt, valve.pilot.field_time_step_iterations, 1e-4);
+        capped += !r.step_converged;
+      }
+    const FlowFields f = field.fields();
+    const std::size_t cavitating = static_cast<std::size_t>(std::count(f.cavitating.begin(), f.cavitating.end(), 1));
+    std::printf("%-10s marched %u steps of %.3g s (%u capped): C_d %.5f, F %.5f N, %4zu cavitating cells, lowest "
+                "pressure %.4g Pa\n",
+                path, valve.pilot.field_time_steps, dt, capped, r.discharge_coefficient, r.flapper_force, cavitating,
+                r.minimum_absolute_pressure);
+    std::fflush(stdout);
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  const double T = argc > 1 ? std::atof(argv[1]) : 50, h = argc > 2 ? std::atof(argv[2]) : 10e-6;
+  const double dp = argc > 3 ? std::atof(argv[3]) : 3.09e6, neighbour = argc > 4 ? std::atof(argv[4]) : 20e-6;
+  std::vector<std::string> settings{"Output/Progress=none", "Output/Flow fields=none"};
+  for (int a = 5; a < argc; ++a)
+    settings.push_back(argv[a]);
+  ValveDescription valve;
+  try
+    {
+      valve = load_valve_description("", settings);
+    }
+  catch (const std::exception &e)
+    {
+      std::fprintf(stderr, "bench_narrow_gap_paths: %s\n", e.what());
+      return 2;
+    }
+  const std::vector<double> dps = scaled(valve.sweeps.field_nozzle_pressure_fractions, span(valve));
+  std::printf("RV-1, %g degC, gap %g m, dp %g Pa, default flow model, cavitation %s\n", T, h, dp,
+              valve.pilot.field_cavitation ? "on" : "off");
+  {
+    Chain chain(valve, PilotGeometry::nozzle_flapper, T);
+    const auto r = chain.solve(h, dp);
+    print("rest", r, chain.last_fields());
+  }
+  {
+    Chain chain(valve, PilotGeometry::nozzle_flapper, T);
+    chain.solve(neighbour, dp);
+    const auto r = chain.solve(h, dp, chain.last_fields());
+    print("neighbour", r, chain.last_fields());
+    if (chain.last_fields())
+      march("neighbour", valve, T, h, dp, *chain.last_fields());
+  }
+  {
+    Chain chain(valve, PilotGeometry::nozzle_flapper, T);
+    std::vector<double> r;
+    for (auto level = dps.rbegin(); level != dps.rend(); ++level)
+      if (*level > dp)
+        chain.solve(h, *level);
+    r = chain.solve(h, dp);
+    print("descending", r, chain.last_fields());
+    if (chain.last_fields())
+      march("descending", valve, T, h, dp, *chain.last_fields());
+  }
+}
