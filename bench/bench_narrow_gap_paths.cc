@@ -47,10 +47,15 @@ namespace
     const double dt = field.courant_time_step(valve.pilot.field_time_step_courant);
     PilotFieldResult r;
     unsigned int capped = 0;
-    for (unsigned int step = 0; step < valve.pilot.field_time_steps; ++step)
+    const unsigned int steps = valve.pilot.field_time_steps, tenth = std::max(1u, steps / 10);
+    for (unsigned int step = 1; step <= steps; ++step)
       {
         r = field.advance(dp, dt, valve.pilot.field_time_step_iterations, 1e-4);
         capped += !r.step_converged;
+        if (step % tenth == 0 && step < steps) // the trajectory: whether and when a cavity collapses
+          std::printf("%-10s   step %5u, t %.3g us: C_d %.5f, F %.5f N, cavitating %d, lowest pressure %.4g Pa\n", path,
+                      step, step * dt * 1e6, r.discharge_coefficient, r.flapper_force, int(r.cavitating),
+                      r.minimum_absolute_pressure);
       }
     const FlowFields f = field.fields();
     const std::size_t cavitating = static_cast<std::size_t>(std::count(f.cavitating.begin(), f.cavitating.end(), 1));

@@ -143,6 +143,9 @@ namespace servodrift::flow
     SimplecSolver solver;
     bool at_rest = true;
     bool fields_from_elsewhere = false; ///< set_fields() since the last solve, of another gap or temperature
+    /// the pressure level the solver's settings were last prepared for (prepare_level); 0 after
+    /// set_fields(), whose fields bring their inlet pressure but not the cavitation model's state
+    double prepared_level = 0;
     double continuation_ratio; ///< largest ratio of successive pressure levels (`Field continuation ratio')
     std::vector<unsigned int> exit_faces; ///< nozzle: interior faces of the bore's exit section x = 0, r < r_N
 
@@ -209,6 +212,8 @@ namespace servodrift::flow
       if (previous > 0 && previous != dp)
         s.scale_pressure_level(dp / previous);
       s.set_boundary_pressure("inlet", dp);
+      if (&s == &solver)
+        prepared_level = dp;
       s.set_turbulent_viscosity_limit(valve.pilot.field_turbulent_viscosity_limit * ideal_reynolds_number(dp));
       at_rest = false;
       if (cavitation)
@@ -254,8 +259,8 @@ namespace servodrift::flow
     /// liquid flow is far above the vapour pressure, a steady state of the equilibrium model that is
     /// not the flow's. RV-1's default sweep carried such cavities (1-30 cells) in ten 10 um cases at
     /// 3.09 and 10.3 MPa whose liquid flow stays 0.14-0.48 MPa above it; they moved C_d by -2.2 to
-    /// +4.7 % and the force by up to 4.3 %, and marched in time they collapse within 1-4 us
-    /// (bench_narrow_gap_paths). Returns the iterations.
+    /// +4.7 % and the force by up to 4.3 %, and marched in time (with the cavitation model) they
+    /// collapse within 1-4.4 us (bench_narrow_gap_paths). Returns the iterations.
     unsigned int check_liquid_flow(double dp)
     {
       FlowFields start = solver.fields();
@@ -372,7 +377,9 @@ namespace servodrift::flow
   PilotFieldResult PilotField::advance(double dp, double dt, unsigned int max_iterations, double tolerance)
   {
     auto &d = *impl;
-    if (d.solver.boundary_pressure("inlet") != dp)
+    // after set_fields() too: the given fields carry their pressure level, but a march without
+    // prepare_level would run without the cavitation model
+    if (d.prepared_level != dp || d.solver.boundary_pressure("inlet") != dp)
       d.prepare_level(d.solver, dp, d.valve.pilot.field_cavitation);
     const SolveReport step = d.solver.advance(dt, max_iterations, tolerance);
     PilotFieldResult r = d.result_of(dp);
@@ -390,6 +397,7 @@ namespace servodrift::flow
   {
     impl->solver.set_fields(f);
     impl->at_rest = false;
+    impl->prepared_level = 0;
     impl->fields_from_elsewhere = f.density != impl->conditions.fluid.density || f.face_area != impl->mesh.face_area;
   }
   bool PilotField::at_rest() const { return impl->at_rest; }
