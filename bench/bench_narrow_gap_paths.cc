@@ -16,6 +16,7 @@
 #include "common/valve_description.h"
 #include "flow/pilot_field.h"
 #include "flow/pilot_field_cases.h"
+#include "flow/pilot_field_time_average.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -50,7 +51,7 @@ namespace
     const unsigned int steps = valve.pilot.field_time_steps, tenth = std::max(1u, steps / 10);
     for (unsigned int step = 1; step <= steps; ++step)
       {
-        r = field.advance(dp, dt, valve.pilot.field_time_step_iterations, 1e-4);
+        r = field.advance(dp, dt, valve.pilot.field_time_step_iterations, step_tolerance);
         capped += !r.step_converged;
         if (step % tenth == 0 && step < steps) // the trajectory: whether and when a cavity collapses
           std::printf("%-10s   step %5u, t %.3g us: C_d %.5f, F %.5f N, cavitating %d, lowest pressure %.4g Pa\n", path,

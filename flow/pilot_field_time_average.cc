@@ -9,11 +9,6 @@ namespace servodrift::flow
 {
   namespace
   {
-    /// Each step's implicit equations are iterated until their scaled residuals fall below this,
-    /// or for at most `Field time step iterations': a step changes the fields little, so its
-    /// residuals start low (a few iterations per step). With 1e-4 a steady laminar case marched in
-    /// time stays within 1.5e-4 of its steady C_dn (pilot_field_time_average_test.cc).
-    constexpr double step_tolerance = 1e-4;
     /// Batches of the standard error of a mean: 10 gives the error estimate itself about 25 %
     /// accuracy (9 degrees of freedom) while each batch still spans a tenth of the averaged time.
     constexpr std::size_t mean_batches = 10;
