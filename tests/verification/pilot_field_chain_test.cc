@@ -1,7 +1,9 @@
-// Verification of the flow stage's retry path for the models less robust than the two-layer
-// k-epsilon (flow/pilot_field_cases.h, Chain::solve_from_k_epsilon; issue 28, item 6).
+// Verification of the flow stage's paths to a case (flow/pilot_field_cases.h's Chain; issue 28,
+// item 6): the retry from the two-layer k-epsilon's solution for the models less robust than it
+// (Chain::solve_from_k_epsilon), Launder-Sharma's hot nozzle from rest, the liquid check of a case
+// started from another gap's cavitating fields, and a march from given fields.
 //
-// RV-1's fixed orifice at 40 degC, cavitating (resolution 1), as the sweep's chain meets it: SST
+// The retry: RV-1's fixed orifice at 40 degC, cavitating (resolution 1), as the sweep's chain meets it: SST
 // converges at 10.3 MPa, then diverges on the step to the full 20.6 MPa and on the retry through the
 // geometric mean of the two levels (the cavity grows by thousands of cells within a few iterations;
 // doc/validation.md, "Robustness"). The chain then solves the case with the two-layer k-epsilon
