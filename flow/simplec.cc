@@ -130,7 +130,8 @@ namespace servodrift::flow
 
   SolveReport SimplecSolver::solve() { return solve_to(impl->settings.tolerance, true); }
 
-  SolveReport SimplecSolver::solve_to(double tolerance, bool consult_monitor)
+  SolveReport SimplecSolver::solve_to(double tolerance, bool consult_monitor,
+                                      const std::function<bool(const Residuals &)> &decided)
   {
     auto &d = *impl;
     d.forget_time_levels();
@@ -156,7 +157,7 @@ namespace servodrift::flow
             case IterationControl::Verdict::converged: converged = true; break;
             case IterationControl::Verdict::diverged: fail<std::runtime_error>(*this, d.mesh, control.reason());
             case IterationControl::Verdict::not_converged: fail<NotConverged>(*this, d.mesh, control.reason());
-            case IterationControl::Verdict::go_on: break;
+            case IterationControl::Verdict::go_on: converged = decided && decided(r); break;
           }
       }
     return d.finish(control, r);

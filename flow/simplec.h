@@ -104,7 +104,8 @@ namespace servodrift::flow
     SolveReport solve();
     /// The same to another tolerance, with or without the convergence monitor: a starting state
     /// for a later solve (an intermediate level of a continuation path).
-    SolveReport solve_to(double tolerance, bool consult_monitor);
+    SolveReport solve_to(double tolerance, bool consult_monitor,
+                         const std::function<bool(const Residuals &)> &decided = {});
     std::string failure_output;
 
     /// Time stepping, laminar (time_stepping.cc): one step of dt [s] from the current fields, second-

@@ -114,6 +114,34 @@ namespace servodrift::flow
     EXPECT_TRUE(std::ifstream(solver.failure_output).good());
   }
 
+  // A caller may end a solve early once its answer is clear (PilotField's liquid check: clearly
+  // cavitating): solve_to asks after each iteration that goes on and stops at the first yes, with
+  // that iteration's residuals; a question that never says yes leaves the solve as it was.
+  TEST(FlowCore, SolveStopsWhereTheCallerDecided)
+  {
+    const FvMesh mesh = rectangle(Geometry::planar, 0, 4, 0, 1, 20, 5);
+    std::map<std::string, BoundaryCondition> bc{
+      {"left", BoundaryCondition::velocity_inlet([](const Vector2 &) { return Vector2(1, 0); })},
+      {"right", BoundaryCondition::pressure_outlet(0)},
+      {"top", BoundaryCondition::wall()},
+      {"bottom", BoundaryCondition::wall()}};
+    SimplecSolver full(mesh, {1, 0.05}, bc, settings());
+    unsigned int asked = 0;
+    const SolveReport all = full.solve_to(1e-6, false, [&](const Residuals &) { return ++asked, false; });
+    EXPECT_EQ(asked, all.iterations - 1); // not asked after the converged iteration
+    EXPECT_GT(all.iterations, 10u);
+    SimplecSolver early(mesh, {1, 0.05}, bc, settings());
+    Residuals at_seventh;
+    unsigned int count = 0;
+    const SolveReport stopped = early.solve_to(1e-6, false, [&](const Residuals &r) {
+      at_seventh = r;
+      return ++count == 7;
+    });
+    EXPECT_EQ(stopped.iterations, 7u);
+    EXPECT_EQ(stopped.residuals.continuity, at_seventh.continuity);
+    EXPECT_GT(stopped.residuals.continuity, 1e-6);
+  }
+
   // Without pressure relaxation SIMPLEC settles into a two-iteration cycle on the frictionless
   // Bernoulli duct (above): with `simplec' the stall test stops it; with `simplec-then-coupled' the
   // coupled iterations take over at the stall and converge to Bernoulli's flow rate (0.5 %, as above).
