@@ -135,8 +135,8 @@ namespace servodrift::flow
   // and five steps of it give the same C_d and force to 1e-3 (the same equations from the same
   // fields, each step solved to scaled residuals of 1e-4; what the fields do not hold, the solved
   // solver's mixture fluxes and boundary values, differs within that: measured 1e-7 in C_d, 1.0e-4
-  // in F), the cavity kept and no cell below the vapour pressure. Whether the state holds is not asked: marched at Courant 1 this
-  // steady state does not hold (doc/validation.md, "Robustness").
+  // in F), the cavity kept and no cell below the vapour pressure. Whether the state holds is not
+  // asked: marched at Courant 1 this steady state does not (doc/validation.md, "Robustness").
   TEST(PilotFieldChain, MarchFromGivenFieldsIsTheSolvedCasesMarch)
   {
     const double T = 120, h = 20e-6, dp = 3.09e6;
