@@ -4,6 +4,7 @@
 // by these names; the turbulence and cavitation models keep their own fields.
 #include "flow/fv_mesh.h"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +24,8 @@ namespace servodrift::flow
     double continuity = 0;     ///< sum of cell mass imbalances / throughput
     double k = 0, epsilon = 0; ///< scaled residuals of the turbulence equations (0 if laminar)
   };
+  /// The largest of them.
+  inline double largest_residual(const Residuals &r) { return std::max({r.u, r.v, r.continuity, r.k, r.epsilon}); }
 
   /// The solution fields, for continuation: what a solver can start from.
   struct FlowFields

@@ -11,8 +11,6 @@ namespace servodrift::flow
   namespace
   {
     constexpr double none = std::numeric_limits<double>::infinity();
-
-    double largest_residual(const Residuals &r) { return std::max({r.u, r.v, r.continuity, r.k, r.epsilon}); }
   } // namespace
 
   IterationControl::IterationControl(const FlowSolverParameters &settings_, double tolerance_,

@@ -278,11 +278,11 @@ namespace servodrift::flow
       SimplecSolver liquid(mesh, conditions.fluid, boundaries(kind), solver_settings(valve, kind, conditions.turbulence));
       liquid.set_fields(start);
       const double tolerance = std::max(liquid_check_tolerance, valve.flow_solver.tolerance);
+      const auto lowest_absolute_pressure = [&] { return downstream_pressure(dp) + liquid.minimum_pressure(); };
       // an answer that is already clear: the liquid flow far below the vapour pressure (at its own level)
       const std::function<bool(const Residuals &)> clearly_cavitating = [&](const Residuals &r) {
-        return std::max({r.u, r.v, r.continuity, r.k, r.epsilon}) < liquid_check_decision_residual &&
-               downstream_pressure(dp) + liquid.minimum_pressure() <
-                 valve.fluid.vapour_pressure - liquid_check_decision_margin * dp;
+        return largest_residual(r) < liquid_check_decision_residual &&
+               lowest_absolute_pressure() < valve.fluid.vapour_pressure - liquid_check_decision_margin * dp;
       };
       unsigned int iterations = 0;
       try
@@ -293,7 +293,7 @@ namespace servodrift::flow
               const auto decided = level == dp ? clearly_cavitating : std::function<bool(const Residuals &)>();
               iterations += liquid.solve_to(tolerance, false, decided).iterations;
             }
-          if (downstream_pressure(dp) + liquid.minimum_pressure() >= valve.fluid.vapour_pressure)
+          if (lowest_absolute_pressure() >= valve.fluid.vapour_pressure)
             solver.set_fields(liquid.fields());
         }
       catch (const std::runtime_error &)

@@ -115,11 +115,7 @@ namespace servodrift::flow
         double sum = 0;
         for (unsigned int f : d.mesh.cell_faces[c])
           sum += std::abs(F[f]);
-        // the mass of the flux's own fluid: the mixture's where the model is on, the liquid's where
-        // it is off (fields given with a liquid fraction before the model is on carry liquid mass
-        // fluxes; the mixture's ratio there made the step 120 times too small, doc/changes.md)
-        const double ratio = d.cavitation.enabled() ? d.cavitation.mixture_ratio(c) : 1.0;
-        rate = std::max(rate, sum / (2 * d.fluid.density * ratio * d.mesh.cell_volume[c]));
+        rate = std::max(rate, sum / (2 * d.fluid.density * d.cavitation.mixture_ratio(c) * d.mesh.cell_volume[c]));
       }
     if (!(rate > 0))
       throw std::invalid_argument("flow: " + d.mesh.source + ": no flow to set a time step by");
