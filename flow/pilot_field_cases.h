@@ -121,6 +121,13 @@ namespace servodrift::flow
     /// Goes on from another chain's state as if this chain had converged to it (the next case
     /// continues from it, and a failing one is retried through the geometric mean of the levels).
     void resume(const State &s);
+    /// A converged state of another flow model (another chain's, at another temperature) that a
+    /// case switching to that model starts from, instead of the fields of the model it leaves:
+    /// k-epsilon seeded on laminar fields spends 1 000-1 500 iterations while its eddy viscosity
+    /// builds up, from another temperature's k-epsilon fields it needs the iterations of a pressure
+    /// step (doc/performance.md, issue 28). Used by the first such switch only; the one offered
+    /// last per model stands.
+    void offer(const State &s) { offered[s.model] = s.fields; }
 
   private:
     /// Continuation step control: a case that does not converge from its starting fields is tried
@@ -158,6 +165,7 @@ namespace servodrift::flow
     std::optional<FlowFields> last;
     Turbulence last_model = Turbulence::laminar;
     double last_dp = 0; ///< the pressure level of `last'
+    std::map<Turbulence, FlowFields> offered; ///< offer(): other models' states to switch to
     /// the VTU of the case being solved, if any (`Output/Flow fields'): its last iterate if it
     /// fails, its mean fields if its time average stands for it
     std::string failure_output;

@@ -138,8 +138,13 @@ namespace servodrift::flow
       }
     if (start)
       slot->set_fields(*start);
-    else if (last && last_model != t)
-      slot->set_fields(*last); // the chain switched model: continue from the other model's fields
+    else if (last && last_model != t) // the chain switched model: from a state of the new one if offered
+      {
+        const auto other = offered.find(t);
+        slot->set_fields(other != offered.end() ? other->second : *last);
+        if (other != offered.end())
+          offered.erase(other); // once: later switches have this chain's own state of the model
+      }
     const std::string vtu = flow_directory(valve) + "/" + vtu_name(kind, conditions.temperature, h, dp);
     failure_output = writes_fields(valve, conditions.temperature) ? vtu : "";
     slot->set_failure_output(failure_output);

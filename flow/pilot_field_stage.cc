@@ -11,6 +11,7 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <map>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -47,6 +48,9 @@ namespace servodrift::flow
     {
       std::vector<double> record;
       std::optional<Chain::State> state; ///< empty if it did not converge
+      /// the nearest hotter states on the path of the other flow models, for the temperature's
+      /// chain to switch to (Chain::offer; RV-1: the laminar 40 and 50 degC get 60 degC's k-epsilon)
+      std::vector<Chain::State> other_models;
     };
 
     std::vector<OrificeFirstCase> orifice_first_cases(const ValveDescription &valve)
@@ -55,13 +59,19 @@ namespace servodrift::flow
       const double dp = valve.sweeps.field_orifice_pressure_fractions.front() * span(valve);
       std::vector<OrificeFirstCase> first(temperatures.size());
       std::optional<FlowFields> hotter; // the fields of the last temperature that converged
+      std::map<Turbulence, Chain::State> hotter_of_model; // the same, per flow model
       for (std::size_t k = temperatures.size(); k-- > 0;)
         {
           Chain chain(valve, PilotGeometry::fixed_orifice, temperatures[k]);
           first[k].record = chain.solve(0, dp, hotter);
           first[k].state = chain.state();
-          if (first[k].state)
-            hotter = first[k].state->fields;
+          if (!first[k].state)
+            continue;
+          hotter = first[k].state->fields;
+          for (const auto &[model, state] : hotter_of_model)
+            if (model != first[k].state->model)
+              first[k].other_models.push_back(state);
+          hotter_of_model.insert_or_assign(first[k].state->model, *first[k].state);
         }
       return first;
     }
@@ -72,41 +82,53 @@ namespace servodrift::flow
     {
       std::vector<char> converged; // per temperature (a std::optional has no boost serialisation)
       std::vector<Chain::State> states;
+      std::vector<std::vector<Chain::State>> other_models;
       for (const auto &f : first)
         {
           converged.push_back(f.state.has_value());
           if (f.state)
             states.push_back(*f.state);
+          other_models.push_back(f.other_models);
         }
       std::ostringstream out;
       boost::archive::binary_oarchive archive(out);
-      archive << converged << states;
+      archive << converged << states << other_models;
       const std::string bytes = out.str();
       return {bytes.begin(), bytes.end()};
     }
 
-    std::vector<std::optional<Chain::State>> unpack_states(const std::vector<char> &bytes)
+    /// pack_states' bytes back into the path's cases (without their records).
+    std::vector<OrificeFirstCase> unpack_states(const std::vector<char> &bytes)
     {
       std::istringstream in(std::string(bytes.begin(), bytes.end()));
       boost::archive::binary_iarchive archive(in);
       std::vector<char> converged;
       std::vector<Chain::State> states;
-      archive >> converged >> states;
-      std::vector<std::optional<Chain::State>> out(converged.size());
+      std::vector<std::vector<Chain::State>> other_models;
+      archive >> converged >> states >> other_models;
+      if (other_models.size() != converged.size())
+        throw std::logic_error("flow: the orifice path's states were not unpacked whole");
+      std::vector<OrificeFirstCase> out(converged.size());
       auto next = states.begin();
       for (std::size_t k = 0; k < converged.size(); ++k)
-        if (converged[k])
-          out[k] = std::move(*next++);
+        {
+          if (converged[k])
+            out[k].state = std::move(*next++);
+          out[k].other_models = std::move(other_models[k]);
+        }
       return out;
     }
 
     /// The fixed orifice's other pressure differences at one temperature, in increasing order, from
-    /// the first case's state (or from rest if it failed).
-    CaseRows orifice_chain(const ValveDescription &valve, double T, const std::optional<Chain::State> &first)
+    /// the first case's state (or from rest if it failed), offered the path's states of the other
+    /// flow models.
+    CaseRows orifice_chain(const ValveDescription &valve, double T, const OrificeFirstCase &first)
     {
       Chain chain(valve, PilotGeometry::fixed_orifice, T);
-      if (first)
-        chain.resume(*first);
+      if (first.state)
+        chain.resume(*first.state);
+      for (const auto &other : first.other_models)
+        chain.offer(other);
       CaseRows records;
       const auto dps = scaled(valve.sweeps.field_orifice_pressure_fractions, span(valve));
       for (std::size_t j = 1; j < dps.size(); ++j)
@@ -193,7 +215,7 @@ namespace servodrift::flow
       std::vector<char> bytes;
       if (mpi_rank() == root)
         bytes = pack_states(first);
-      const std::vector<std::optional<Chain::State>> states = unpack_states(broadcast_bytes(bytes, root));
+      const std::vector<OrificeFirstCase> states = unpack_states(broadcast_bytes(bytes, root));
       if (states.size() != n)
         throw std::logic_error("flow: the orifice path returned a wrong number of states");
       const CaseRows other_orifice_cases = run_sweep(

@@ -1,8 +1,9 @@
 // Verification of the flow stage's paths to a case (flow/pilot_field_cases.h's Chain; issue 28,
 // item 6): the retry from the two-layer k-epsilon's solution for the models less robust than it
 // (Chain::solve_from_k_epsilon), Launder-Sharma's hot nozzle from rest, the liquid check of a case
-// started from another gap's cavitating fields, and a march from given fields against the march of
-// the case that solved them.
+// started from another gap's cavitating fields, a march from given fields against the march of
+// the case that solved them, and a chain's switch of model from another temperature's state of the
+// new model (Chain::offer).
 //
 // The retry: RV-1's fixed orifice at 40 degC, cavitating (resolution 1), as the sweep's chain meets it: SST
 // converges at 10.3 MPa, then diverges on the step to the full 20.6 MPa and on the retry through the
@@ -167,5 +168,45 @@ namespace servodrift::flow
     EXPECT_GE(b.minimum_absolute_pressure, valve.fluid.vapour_pressure * (1 - 1e-9));
     EXPECT_NEAR(b.discharge_coefficient / a.discharge_coefficient, 1, 1e-3);
     EXPECT_NEAR(b.flapper_force / a.flapper_force, 1, 1e-3);
+  }
+
+  // A chain that switches model (RV-1's fixed orifice at 40 degC: laminar at 1.03 MPa by its Reynolds
+  // number, k-epsilon from 5.15 MPa) starts the new model from a state of it that it is offered
+  // (the flow stage offers the orifice path's nearest hotter k-epsilon state, here 60 degC's at 1.03
+  // MPa) instead of the laminar fields. The case is single phase and turbulent: its steady
+  // solution does not depend on the start, so both paths must land on the same C_d to
+  // 1e-4 (two converged solutions of the same equations: the monitor's 1e-4), and the offered start
+  // must be the one taken, seen in its iterations: fewer than from the laminar fields, whose eddy
+  // viscosity has to build up from nothing (RV-1 at resolution 1 in the sweep: 1 106 against 1 606;
+  // doc/performance.md). Resolution 0.5, as the regression cases, to keep the test short.
+  TEST(PilotFieldChain, ModelSwitchStartsFromTheOfferedStateOfTheNewModel)
+  {
+    using namespace case_record;
+    const double dp_laminar = 1.03e6, dp = 5.15e6;
+    const ValveDescription valve =
+      test::valve({"Output/Progress=none", "Output/Flow fields=none", "Pilot stage/Field mesh resolution=0.5"});
+    Chain hotter(valve, PilotGeometry::fixed_orifice, 60);
+    ASSERT_EQ(hotter.solve(0, dp_laminar)[flag], flags::computed);
+    ASSERT_EQ(hotter.state()->model, FlowSolverParameters::Turbulence::k_epsilon);
+
+    Chain from_laminar(valve, PilotGeometry::fixed_orifice, 40);
+    ASSERT_EQ(from_laminar.solve(0, dp_laminar)[flag], flags::computed);
+    const Chain::State laminar = *from_laminar.state();
+    ASSERT_EQ(laminar.model, FlowSolverParameters::Turbulence::laminar);
+    const std::vector<double> reference = from_laminar.solve(0, dp);
+
+    Chain offered(valve, PilotGeometry::fixed_orifice, 40);
+    offered.resume(laminar);
+    offered.offer(*hotter.state());
+    const std::vector<double> r = offered.solve(0, dp);
+    std::printf("orifice at 40 degC, 5.15 MPa after the laminar 1.03 MPa: from the laminar fields C_d %.7f (%g "
+                "iterations); from 60 degC's k-epsilon C_d %.7f (%g iterations)\n",
+                reference[discharge_coefficient], reference[iterations], r[discharge_coefficient], r[iterations]);
+    ASSERT_EQ(reference[flag], flags::computed);
+    ASSERT_EQ(r[flag], flags::computed);
+    EXPECT_EQ(r[model], double(FlowSolverParameters::Turbulence::k_epsilon));
+    EXPECT_EQ(r[cavitating], 0);
+    EXPECT_NEAR(r[discharge_coefficient] / reference[discharge_coefficient], 1, 1e-4);
+    EXPECT_LT(r[iterations], reference[iterations]);
   }
 } // namespace servodrift::flow
