@@ -57,8 +57,8 @@ namespace servodrift::flow
       {
         const FvMatrix &eq = momentum.component(component);
         const std::size_t offset = component * n;
-        for (int column = 0; column < eq.A.outerSize(); ++column)
-          for (SparseMatrix::InnerIterator it(eq.A, column); it; ++it)
+        for (int row = 0; row < eq.A.outerSize(); ++row)
+          for (RowMajorMatrix::InnerIterator it(eq.A, row); it; ++it)
             t.emplace_back(offset + it.row(), offset + it.col(), it.value());
         rhs.segment(offset, n) = eq.b;
       }

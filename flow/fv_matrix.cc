@@ -36,9 +36,9 @@ namespace servodrift::flow
     matrix.resize(n, n);
     matrix.setFromTriplets(t.begin(), t.end());
     matrix.makeCompressed();
-    auto position = [this](std::size_t r, std::size_t c) {
+    auto position = [this](std::size_t r, std::size_t c) { // row r's column indices are sorted
       const int *inner = matrix.innerIndexPtr(), *outer = matrix.outerIndexPtr();
-      return std::lower_bound(inner + outer[c], inner + outer[c + 1], static_cast<int>(r)) - inner;
+      return std::lower_bound(inner + outer[r], inner + outer[r + 1], static_cast<int>(c)) - inner;
     };
     diagonal.resize(n);
     for (std::size_t c = 0; c < n; ++c)
@@ -53,9 +53,9 @@ namespace servodrift::flow
 
   struct FvMatrix::IterativeSolvers
   {
-    Eigen::BiCGSTAB<SparseMatrix, Eigen::IncompleteLUT<double>> ilu;
-    Eigen::BiCGSTAB<SparseMatrix, Eigen::DiagonalPreconditioner<double>> jacobi;
-    Eigen::BiCGSTAB<SparseMatrix, SymmetricGaussSeidelPreconditioner> gauss_seidel;
+    Eigen::BiCGSTAB<RowMajorMatrix, Eigen::IncompleteLUT<double>> ilu;
+    Eigen::BiCGSTAB<RowMajorMatrix, Eigen::DiagonalPreconditioner<double>> jacobi;
+    Eigen::BiCGSTAB<RowMajorMatrix, SymmetricGaussSeidelPreconditioner> gauss_seidel;
   };
 
   FvMatrix::FvMatrix(const FvMesh &mesh_, const MatrixPattern &pattern_)

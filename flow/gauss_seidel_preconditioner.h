@@ -6,10 +6,10 @@
 // BiCGSTAB needs a quarter of the iterations for the same reduction; but the sweeps cost more than
 // the iterations they save on the valve's meshes (`Flow solver/Momentum solver', doc/performance.md).
 //
-// Works on a compressed column-major matrix with every diagonal entry stored (the
-// finite-volume matrices), column by column: the forward sweep solves (D + L) w = r eliminating
-// with the entries below the diagonal of each column, the backward sweep (D + U) z = D w with those
-// above it. No set-up beyond locating the diagonal (compute()).
+// Works on a compressed row-major matrix with every diagonal entry stored (the finite-volume
+// transport matrices, flow/fv_matrix.h), row by row: the forward sweep solves (D + L) w = r with the
+// entries left of each row's diagonal, the backward sweep (D + U) z = D w with those right of it.
+// No set-up beyond locating the diagonal (compute()).
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -38,18 +38,18 @@ namespace servodrift::flow
       return compute(A);
     }
     /// Takes A's compressed arrays (A is the solver's own matrix or a reference to it and must
-    /// outlive the solve, its values current) and finds each column's diagonal entry.
+    /// outlive the solve, its values current) and finds each row's diagonal entry.
     template <typename MatrixType>
     SymmetricGaussSeidelPreconditioner &compute(const MatrixType &A)
     {
-      static_assert(!(MatrixType::Flags & Eigen::RowMajorBit), "a column-major matrix");
-      n = A.cols();
+      static_assert(MatrixType::Flags & Eigen::RowMajorBit, "a row-major matrix");
+      n = A.rows();
       outer = A.outerIndexPtr(), inner = A.innerIndexPtr(), value = A.valuePtr();
       ok = A.isCompressed();
       diagonal.assign(std::size_t(n), -1);
       for (Eigen::Index c = 0; ok && c < n; ++c)
         {
-          // the row indices of a compressed column are sorted
+          // the column indices of a compressed row are sorted
           const int *d = std::lower_bound(inner + outer[c], inner + outer[c + 1], int(c));
           ok = d != inner + outer[c + 1] && *d == c && value[d - inner] != 0;
           diagonal[std::size_t(c)] = int(d - inner);
@@ -63,26 +63,24 @@ namespace servodrift::flow
     template <typename Rhs>
     Eigen::VectorXd solve(const Eigen::MatrixBase<Rhs> &r) const
     {
-      Eigen::VectorXd z = r;
-      // forward: (D + L) w = r; column c's entries below the diagonal eliminate w_c from later rows
-      for (Eigen::Index c = 0; c < n; ++c)
+      Eigen::VectorXd z(n);
+      // forward: (D + L) w = r, row i with the w_j, j < i, already found
+      for (Eigen::Index i = 0; i < n; ++i)
         {
-          const int d = diagonal[std::size_t(c)];
-          const double w = z[c] / value[d];
-          z[c] = w;
-          for (int k = d + 1; k < outer[c + 1]; ++k)
-            z[inner[k]] -= value[k] * w;
+          const int d = diagonal[std::size_t(i)];
+          double sum = r[i];
+          for (int k = outer[i]; k < d; ++k)
+            sum -= value[k] * z[inner[k]];
+          z[i] = sum / value[d];
         }
-      // backward: (D + U) z = D w; column c's entries above the diagonal eliminate z_c from earlier rows
-      for (Eigen::Index c = 0; c < n; ++c)
-        z[c] *= value[diagonal[std::size_t(c)]];
-      for (Eigen::Index c = n; c-- > 0;)
+      // backward: (D + U) z = D w, row i with the z_j, j > i, already found
+      for (Eigen::Index i = n; i-- > 0;)
         {
-          const int d = diagonal[std::size_t(c)];
-          const double zc = z[c] / value[d];
-          z[c] = zc;
-          for (int k = outer[c]; k < d; ++k)
-            z[inner[k]] -= value[k] * zc;
+          const int d = diagonal[std::size_t(i)];
+          double sum = value[d] * z[i];
+          for (int k = d + 1; k < outer[i + 1]; ++k)
+            sum -= value[k] * z[inner[k]];
+          z[i] = sum / value[d];
         }
       return z;
     }
@@ -91,7 +89,7 @@ namespace servodrift::flow
     Eigen::Index n = 0;
     const int *outer = nullptr, *inner = nullptr;
     const double *value = nullptr;
-    std::vector<int> diagonal; ///< index of each column's diagonal entry in the value array
+    std::vector<int> diagonal; ///< index of each row's diagonal entry in the value array
     bool ok = false;
   };
 } // namespace servodrift::flow

@@ -54,10 +54,10 @@ namespace servodrift::flow
     // the one-equation model's where w = 1 and the transport equation's where w = 0
     const int *inner = equation.A.innerIndexPtr(), *outer = equation.A.outerIndexPtr();
     double *value = equation.A.valuePtr();
-    for (std::size_t column = 0; column < mesh.n_cells(); ++column)
-      for (int j = outer[column]; j < outer[column + 1]; ++j)
-        if (static_cast<std::size_t>(inner[j]) != column)
-          value[j] *= 1 - layer_weight[inner[j]];
+    for (std::size_t row = 0; row < mesh.n_cells(); ++row)
+      for (int j = outer[row]; j < outer[row + 1]; ++j)
+        if (static_cast<std::size_t>(inner[j]) != row)
+          value[j] *= 1 - layer_weight[row];
     for (std::size_t c = 0; c < mesh.n_cells(); ++c)
       {
         const double w = layer_weight[c];

@@ -209,9 +209,9 @@ namespace servodrift::flow
         }
       const int *inner = omega_equation.A.innerIndexPtr(), *outer = omega_equation.A.outerIndexPtr();
       double *value = omega_equation.A.valuePtr();
-      for (std::size_t column = 0; column < n; ++column)
-        for (int j = outer[column]; j < outer[column + 1]; ++j)
-          if (held[inner[j]] && static_cast<std::size_t>(inner[j]) != column)
+      for (std::size_t row = 0; row < n; ++row)
+        for (int j = outer[row]; j < outer[row + 1]; ++j)
+          if (held[row] && static_cast<std::size_t>(inner[j]) != row)
             value[j] = 0;
     }
     for (std::size_t c = 0; c < n; ++c)

@@ -16,6 +16,7 @@ namespace servodrift::flow
   struct MomentumEquation::DirectSolvers
   {
     std::array<Eigen::UmfPackLU<SparseMatrix>, 2> lu;
+    SparseMatrix column_major; ///< UMFPACK takes its matrix by columns
   };
 
   MomentumEquation::MomentumEquation(const FvMesh &mesh_, const MatrixPattern &pattern, const FluidProperties &fluid_,
@@ -121,9 +122,10 @@ namespace servodrift::flow
             continue;
           }
         auto &lu = direct->lu[i];
+        direct->column_major = eq.A;
         if (first_iteration)
-          lu.analyzePattern(eq.A);
-        lu.factorize(eq.A);
+          lu.analyzePattern(direct->column_major);
+        lu.factorize(direct->column_major);
         if (lu.info() != Eigen::Success)
           throw std::runtime_error("UMFPACK could not factorise the momentum matrix");
         Eigen::Map<Eigen::VectorXd> x(phi.data(), mesh.n_cells());

@@ -66,6 +66,10 @@ namespace servodrift::flow
     , solver(std::make_unique<Solver>())
   {
     solver->matrix = pattern.matrix;
+    // the pattern's positions hold in this column-major copy (symmetric values; MatrixPattern)
+    const auto &copy = solver->matrix;
+    if (!std::equal(copy.innerIndexPtr(), copy.innerIndexPtr() + copy.nonZeros(), pattern.matrix.innerIndexPtr()))
+      throw std::logic_error("flow: the pressure equation's pattern is not structurally symmetric");
     solver->factor.analyzePattern(solver->matrix); // once per mesh
     if (solver->factor.info() != Eigen::Success)
       throw std::runtime_error("flow: CHOLMOD symbolic analysis of the pressure equation failed");
