@@ -3,13 +3,15 @@
 // (D + U), applied as a forward and a backward sweep over the cells. The transport matrices of
 // flow/simplec (momentum, k, epsilon) are upwind convection-diffusion matrices: a sweep carries
 // information along the flow through the whole domain where a Jacobi step moves it one cell, so
-// BiCGSTAB needs a quarter of the iterations for the same reduction; but the sweeps cost more than
-// the iterations they save on the valve's meshes (`Flow solver/Momentum solver', doc/performance.md).
+// BiCGSTAB needs a quarter of the iterations for the same reduction (`Flow solver/Momentum solver',
+// doc/performance.md).
 //
 // Works on a compressed row-major matrix with every diagonal entry stored (the finite-volume
 // transport matrices, flow/fv_matrix.h), row by row: the forward sweep solves (D + L) w = r with the
 // entries left of each row's diagonal, the backward sweep (D + U) z = D w with those right of it.
-// No set-up beyond locating the diagonal (compute()).
+// Each row waits for the one before it, so a division there would set the sweep's pace: the
+// inverse diagonal is formed once in compute() (a sweep then costs about as much as a product A x).
+// No other set-up than that and locating the diagonal.
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -54,6 +56,9 @@ namespace servodrift::flow
           ok = d != inner + outer[c + 1] && *d == c && value[d - inner] != 0;
           diagonal[std::size_t(c)] = int(d - inner);
         }
+      inverse.resize(std::size_t(n));
+      for (Eigen::Index c = 0; ok && c < n; ++c)
+        inverse[std::size_t(c)] = 1 / value[diagonal[std::size_t(c)]];
       return *this;
     }
 
@@ -71,7 +76,7 @@ namespace servodrift::flow
           double sum = r[i];
           for (int k = outer[i]; k < d; ++k)
             sum -= value[k] * z[inner[k]];
-          z[i] = sum / value[d];
+          z[i] = sum * inverse[std::size_t(i)];
         }
       // backward: (D + U) z = D w, row i with the z_j, j > i, already found
       for (Eigen::Index i = n; i-- > 0;)
@@ -80,7 +85,7 @@ namespace servodrift::flow
           double sum = value[d] * z[i];
           for (int k = d + 1; k < outer[i + 1]; ++k)
             sum -= value[k] * z[inner[k]];
-          z[i] = sum / value[d];
+          z[i] = sum * inverse[std::size_t(i)];
         }
       return z;
     }
@@ -89,6 +94,7 @@ namespace servodrift::flow
     Eigen::Index n = 0;
     const int *outer = nullptr, *inner = nullptr;
     const double *value = nullptr;
+    std::vector<double> inverse; ///< 1 / a_ii of each row
     std::vector<int> diagonal; ///< index of each row's diagonal entry in the value array
     bool ok = false;
   };
