@@ -153,7 +153,8 @@ namespace servodrift::flow
     return residual;
   }
 
-  void FvMatrix::solve(std::vector<double> &phi, const FlowSolverParameters &settings, const char *equation)
+  void FvMatrix::solve(std::vector<double> &phi, const FlowSolverParameters &settings,
+                       FlowSolverParameters::MomentumSolver preconditioner, const char *equation)
   {
     Eigen::Map<Eigen::VectorXd> x(phi.data(), mesh.n_cells());
     const Eigen::VectorXd r = b - A * x;
@@ -170,7 +171,7 @@ namespace servodrift::flow
                                  format_number(solver.error()) + ")");
       x += dx;
     };
-    switch (settings.momentum_solver)
+    switch (preconditioner)
       {
         case FlowSolverParameters::MomentumSolver::bicgstab_ilu:
           solvers->ilu.preconditioner().setDroptol(ilut_drop_tolerance);
@@ -178,7 +179,7 @@ namespace servodrift::flow
           run(solvers->ilu);
           break;
         case FlowSolverParameters::MomentumSolver::bicgstab_gauss_seidel: run(solvers->gauss_seidel); break;
-        default: run(solvers->jacobi); // also k and epsilon with the direct momentum solver
+        default: run(solvers->jacobi); // also where the caller has a direct solver of its own
       }
   }
 } // namespace servodrift::flow

@@ -121,7 +121,7 @@ namespace servodrift::flow
     r.k /= std::max(scale, vanishing);
     const bool rate_from_linearised_k = epsilon_rate_from_linearised_k();
     const std::vector<double> k_linearised = rate_from_linearised_k ? k : std::vector<double>{};
-    k_equation.solve(k, settings, "k");
+    k_equation.solve(k, settings, settings.turbulence_solver, "k");
 
     // epsilon: C1 e/k P [+ E] as the source, C2 [f_2] rho e^2/k as an implicit sink
     diffusivity(sigma_epsilon);
@@ -142,7 +142,7 @@ namespace servodrift::flow
       level[c] = std::max(epsilon[c], epsilon_level);
     r.epsilon = epsilon_equation.relax(epsilon, alpha, level, scale);
     r.epsilon /= std::max(scale, vanishing);
-    epsilon_equation.solve(epsilon, settings, "epsilon");
+    epsilon_equation.solve(epsilon, settings, settings.turbulence_solver, "epsilon");
 
     // bounded, then the turbulent viscosity (relaxed, at most the limit)
     const double mu_t_limit = viscosity_ratio_limit * mu;

@@ -179,7 +179,7 @@ namespace servodrift::flow
       level[c] = std::max(k[c], k_level);
     r.k = k_equation.relax(k, alpha, level, scale);
     r.k /= std::max(scale, vanishing);
-    k_equation.solve(k, settings, "k");
+    k_equation.solve(k, settings, settings.turbulence_solver, "k");
 
     // omega: alpha rho S^2 as the source, beta rho omega^2 as an implicit sink, the cross-diffusion a
     // source where positive, an implicit sink where negative
@@ -218,7 +218,7 @@ namespace servodrift::flow
       level[c] = std::max(omega[c], omega_level);
     r.epsilon = omega_equation.relax(omega, alpha, level, scale);
     r.epsilon /= std::max(scale, vanishing);
-    omega_equation.solve(omega, settings, "omega");
+    omega_equation.solve(omega, settings, settings.turbulence_solver, "omega");
 
     // bounded, then mu_t = rho a1 k / max(a1 omega, S F2) (relaxed, at most the limit)
     const double mu_t_limit = viscosity_ratio_limit * mu;

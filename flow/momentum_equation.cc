@@ -118,7 +118,7 @@ namespace servodrift::flow
         FvMatrix &eq = equation[i];
         if (settings.momentum_solver != FlowSolverParameters::MomentumSolver::direct)
           {
-            eq.solve(phi, settings, "momentum");
+            eq.solve(phi, settings, settings.momentum_solver, "momentum");
             continue;
           }
         auto &lu = direct->lu[i];

@@ -15,8 +15,9 @@ namespace servodrift
     enum class Coupling { simplec, coupled, simplec_then_coupled };
     Coupling coupling;              ///< pressure-velocity coupling: SIMPLEC, one coupled system, or SIMPLEC until it stalls
     enum class MomentumSolver { bicgstab_jacobi, bicgstab_gauss_seidel, bicgstab_ilu, direct };
-    MomentumSolver momentum_solver; ///< linear solver of the momentum (and k, epsilon) equations
-    double linear_solver_tolerance; ///< BiCGSTAB's residual reduction of momentum, k and epsilon [1]
+    MomentumSolver momentum_solver; ///< linear solver of the momentum equations
+    MomentumSolver turbulence_solver; ///< linear solver of k, epsilon and omega (BiCGSTAB's preconditioners only)
+    double linear_solver_tolerance; ///< BiCGSTAB's residual reduction of momentum, k, epsilon, omega [1]
     double tolerance;               ///< scaled residuals of momentum and continuity [1]
     unsigned int max_iterations;    ///< SIMPLEC iterations before the run fails
     unsigned int stall_window;      ///< iterations per window of the stall test (0: off)
