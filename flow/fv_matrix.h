@@ -55,11 +55,11 @@ namespace servodrift::flow
     /// phi into b. Returns sum |b - A phi| of the unrelaxed equation at the current phi, and in `scale'
     /// sum a_P |scale_field|, what that residual is relative to.
     double relax(const std::vector<double> &phi, double alpha, const std::vector<double> &scale_field, double &scale);
-    /// BiCGSTAB with the preconditioner of `solver' (`Flow solver/Momentum solver' or `Turbulence
-    /// solver'; Jacobi for the direct solver) on the correction, so that its tolerance is relative
-    /// to the current residual; `equation' names it in the error thrown if it does not converge.
+    /// BiCGSTAB with `preconditioner' (`Flow solver/Momentum solver' or `Turbulence solver';
+    /// Jacobi for the direct solver) on the correction, so that its tolerance is relative to the
+    /// current residual; `equation' names it in the error thrown if it does not converge.
     void solve(std::vector<double> &phi, const FlowSolverParameters &settings,
-               FlowSolverParameters::MomentumSolver solver, const char *equation);
+               FlowSolverParameters::MomentumSolver preconditioner, const char *equation);
 
     RowMajorMatrix A;                   ///< the coefficients, on the pattern
     Eigen::VectorXd b;                  ///< the right-hand side
