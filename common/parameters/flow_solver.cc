@@ -110,15 +110,16 @@ namespace servodrift
     coupling = coupling_name == "coupled"              ? Coupling::coupled :
                coupling_name == "simplec-then-coupled" ? Coupling::simplec_then_coupled :
                                                          Coupling::simplec;
-    const std::string m = prm.get("Momentum solver");
-    momentum_solver = m == "direct"                ? MomentumSolver::direct :
-                      m == "bicgstab-ilu"          ? MomentumSolver::bicgstab_ilu :
-                      m == "bicgstab-gauss-seidel" ? MomentumSolver::bicgstab_gauss_seidel :
-                                                     MomentumSolver::bicgstab_jacobi;
-    const std::string turbulence_solver_name = prm.get("Turbulence solver");
-    turbulence_solver = turbulence_solver_name == "bicgstab-ilu"          ? MomentumSolver::bicgstab_ilu :
-                        turbulence_solver_name == "bicgstab-gauss-seidel" ? MomentumSolver::bicgstab_gauss_seidel :
-                                                       MomentumSolver::bicgstab_jacobi;
+    // one reading of the solver names for both entries (`Turbulence solver' offers no "direct")
+    auto linear_solver = [&prm](const char *entry) {
+      const std::string m = prm.get(entry);
+      return m == "direct"                ? MomentumSolver::direct :
+             m == "bicgstab-ilu"          ? MomentumSolver::bicgstab_ilu :
+             m == "bicgstab-gauss-seidel" ? MomentumSolver::bicgstab_gauss_seidel :
+                                            MomentumSolver::bicgstab_jacobi;
+    };
+    momentum_solver = linear_solver("Momentum solver");
+    turbulence_solver = linear_solver("Turbulence solver");
     linear_solver_tolerance = prm.get_double("Linear solver tolerance");
     tolerance = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Maximum iterations");
