@@ -1,0 +1,124 @@
+#pragma once
+// MagnetostaticProblem's implementation: the state that the units of the planar magnetostatic solver
+// share. Private to magnetostatic_problem.cc (set-up, assembly and Newton solve of the A_z equation,
+// model.md 4.1), mesh_morphing.cc (the body's motion and the extension of it into the air) and
+// magnetostatic_fields.cc (what is computed from a solution: forces, coenergy, flux densities, VTU).
+#include "magnetics/magnetostatic_problem.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Sparse>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace servodrift::magnetics
+{
+  using namespace dealii;
+
+  namespace detail
+  {
+    using EigenMatrix = Eigen::SparseMatrix<double>;
+    // CHOLMOD's supernodal LL^T. Its OpenMP teams (a compiled-in 4 threads) would only compete with
+    // the MPI ranks that share out the sweeps; servodrift caps them with OMP_THREAD_LIMIT=1 (apps/).
+    using Cholesky = Eigen::CholmodSupernodalLLT<EigenMatrix, Eigen::Lower>;
+
+    /// B = curl(A e_z) = (dA/dy, -dA/dx) in the plane
+    inline Tensor<1, 2> flux_density(const Tensor<1, 2> &grad_A)
+    {
+      Tensor<1, 2> B;
+      B[0] = grad_A[1];
+      B[1] = -grad_A[0];
+      return B;
+    }
+
+    inline void check(const Cholesky &solver, const char *what)
+    {
+      if (solver.info() != Eigen::Success)
+        throw std::runtime_error(std::string("magnetostatics: CHOLMOD failed in ") + what +
+                                 " (matrix not positive definite?)");
+    }
+  } // namespace detail
+
+  struct MagnetostaticProblem::Implementation
+  {
+    using EigenMatrix = detail::EigenMatrix;
+    using Cholesky = detail::Cholesky;
+
+    std::map<int, Material> materials;
+    Motion motion;
+    double depth;
+    double s = 0;       ///< current position
+    double current = 0; ///< current excitation of the last solve
+    double tolerance = 1e-10; ///< of the last solve
+
+    Triangulation<2> triangulation;
+    std::vector<Point<2>> reference_vertices;
+
+    // A_z
+    FE_Q<2> fe;
+    DoFHandler<2> dof_handler;
+    QGauss<2> quadrature;
+    AffineConstraints<double> constraints; ///< A_z = 0 on the outer boundary (homogeneous)
+    SparsityPattern sparsity;
+    SparseMatrix<double> jacobian;
+    Vector<double> solution, rhs;
+    EigenMatrix eigen_jacobian;
+    std::vector<std::ptrdiff_t> eigen_position; ///< deal.II storage index -> Eigen value index
+    Cholesky cholesky;
+    bool have_factorization = false;       ///< a numeric factorisation of a recent Jacobian exists
+    /// Geometry of every cell at the current position (JxW, shape gradients, DoF indices): the
+    /// assembly loops of the Newton and chord iterations are pure arithmetic on it.
+    struct CellGeometry
+    {
+      std::vector<double> JxW;                  ///< [q]
+      std::vector<Tensor<1, 2>> shape_gradients; ///< [q * dofs_per_cell + i]
+      std::vector<types::global_dof_index> dofs;
+      int material;
+    };
+    std::vector<CellGeometry> cell_geometry;
+    FullMatrix<double> shape_values; ///< [q][i] on the reference cell
+    void update_cell_geometry();
+    std::map<double, double> source_norm;  ///< ||R(A = 0)|| per current: the scale of the tolerance
+
+    // morphing: vertex displacement (Q1) extended into the morphing air by a Laplace solve
+    FE_Q<2> fe_morph;
+    DoFHandler<2> morph_dof_handler;
+    std::vector<unsigned int> vertex_of_dof;
+    std::vector<int> free_index, fixed_index; ///< per morph DoF; -1 where not in that set
+    std::vector<bool> moving_dof;
+    EigenMatrix K_ff, K_fd;
+    Cholesky morph_cholesky;
+    std::array<Vector<double>, 2> velocity; ///< virtual velocity of the body, extended (for the MST)
+
+    Implementation(const PlanarMesh &mesh, const std::map<int, Material> &materials, const Motion &motion,
+                   unsigned int degree, double depth, unsigned int refinements);
+
+    const Material &material(const DoFHandler<2>::active_cell_iterator &cell) const
+    {
+      return materials.at(static_cast<int>(cell->material_id()));
+    }
+
+    void setup_system();
+    void setup_morphing();
+    std::array<double, 2> body_displacement(const Point<2> &x, double position) const;
+    std::array<double, 2> body_velocity(const Point<2> &x_now) const;
+    void extend(const std::array<Vector<double>, 2> &boundary_values, std::array<Vector<double>, 2> &field) const;
+    void move_to(double position);
+
+    void assemble_system(const Vector<double> &A, bool with_matrix);
+    double residual_norm(const Vector<double> &A);
+    NewtonStatistics solve(double current, double tolerance, unsigned int max_iterations);
+    void solve_linear_system(Vector<double> &update);
+  };
+} // namespace servodrift::magnetics

@@ -1,0 +1,213 @@
+// The moving body by mesh morphing (model.md 4.1): its vertices move rigidly, the morphing air's
+// follow a Laplace extension of that motion, assembled and factorised once per mesh; the body's
+// virtual velocity is extended the same way, for the weighted Maxwell stress tensor.
+#include "magnetics/magnetostatic_problem_implementation.h"
+
+#include <deal.II/fe/fe_values.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace servodrift::magnetics
+{
+  using detail::check;
+
+  void MagnetostaticProblem::Implementation::setup_morphing()
+  {
+    morph_dof_handler.distribute_dofs(fe_morph);
+    const unsigned int n = morph_dof_handler.n_dofs();
+    vertex_of_dof.assign(n, 0);
+    std::vector<bool> fixed(n, false), moving(n, false), in_body(n, false);
+    for (const auto &cell : morph_dof_handler.active_cell_iterators())
+      {
+        const Material &m = material(cell);
+        for (unsigned int v = 0; v < 4; ++v)
+          {
+            const auto d = cell->vertex_dof_index(v, 0);
+            vertex_of_dof[d] = cell->vertex_index(v);
+            if (!m.morphing)
+              fixed[d] = true;
+            if (m.moving)
+              moving[d] = true;
+            else if (!m.morphing)
+              in_body[d] = true; // a solid that stays
+          }
+        for (unsigned int f = 0; f < 4; ++f)
+          if (cell->face(f)->at_boundary())
+            for (unsigned int v = 0; v < 2; ++v)
+              fixed[cell->face(f)->vertex_dof_index(v, 0)] = true;
+      }
+    for (unsigned int d = 0; d < n; ++d)
+      if (moving[d] && in_body[d])
+        throw std::logic_error("magnetostatics: the moving body touches a fixed solid; put air between them");
+    moving_dof = moving;
+
+    free_index.assign(n, -1);
+    fixed_index.assign(n, -1);
+    int n_free = 0, n_fixed = 0;
+    for (unsigned int d = 0; d < n; ++d)
+      (fixed[d] ? fixed_index[d] = n_fixed++ : free_index[d] = n_free++);
+
+    // Laplace operator on the morphing air, reference configuration: assembled and factorised once
+    FEValues<2> fe_values(fe_morph, QGauss<2>(2), update_gradients | update_JxW_values);
+    std::vector<types::global_dof_index> dofs(4);
+    std::vector<Eigen::Triplet<double>> t_ff, t_fd;
+    for (const auto &cell : morph_dof_handler.active_cell_iterators())
+      {
+        if (!material(cell).morphing)
+          continue;
+        fe_values.reinit(cell);
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < 4; ++i)
+          {
+            if (free_index[dofs[i]] < 0)
+              continue;
+            for (unsigned int j = 0; j < 4; ++j)
+              {
+                double k = 0;
+                for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+                  k += fe_values.shape_grad(i, q) * fe_values.shape_grad(j, q) * fe_values.JxW(q);
+                if (free_index[dofs[j]] >= 0)
+                  t_ff.emplace_back(free_index[dofs[i]], free_index[dofs[j]], k);
+                else
+                  t_fd.emplace_back(free_index[dofs[i]], fixed_index[dofs[j]], k);
+              }
+          }
+      }
+    K_ff.resize(n_free, n_free);
+    K_ff.setFromTriplets(t_ff.begin(), t_ff.end());
+    K_fd.resize(n_free, n_fixed);
+    K_fd.setFromTriplets(t_fd.begin(), t_fd.end());
+    if (n_free > 0)
+      {
+        morph_cholesky.compute(K_ff);
+        check(morph_cholesky, "the mesh-morphing factorisation");
+      }
+    for (auto &v : velocity)
+      v.reinit(n);
+    move_to(0.0);
+  }
+
+  std::array<double, 2> MagnetostaticProblem::Implementation::body_displacement(const Point<2> &x, double position) const
+  {
+    if (motion.kind == Motion::Kind::translation)
+      return {position * motion.direction[0], position * motion.direction[1]};
+    const double c = std::cos(position), sn = std::sin(position);
+    const double dx = x[0] - motion.point[0], dy = x[1] - motion.point[1];
+    return {motion.point[0] + c * dx - sn * dy - x[0], motion.point[1] + sn * dx + c * dy - x[1]};
+  }
+
+  std::array<double, 2> MagnetostaticProblem::Implementation::body_velocity(const Point<2> &x_now) const
+  {
+    if (motion.kind == Motion::Kind::translation)
+      return motion.direction;
+    return {-(x_now[1] - motion.point[1]), x_now[0] - motion.point[0]}; // e_z x (x - pivot)
+  }
+
+  void MagnetostaticProblem::Implementation::extend(const std::array<Vector<double>, 2> &boundary,
+                                                    std::array<Vector<double>, 2> &field) const
+  {
+    // u_F = -K_ff^-1 K_fd u_D on each component
+    const unsigned int n = morph_dof_handler.n_dofs();
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        field[k].reinit(n);
+        Eigen::VectorXd u_D(K_fd.cols());
+        for (unsigned int d = 0; d < n; ++d)
+          if (fixed_index[d] >= 0)
+            {
+              u_D[fixed_index[d]] = boundary[k][d];
+              field[k][d] = boundary[k][d];
+            }
+        if (K_ff.rows() == 0)
+          continue;
+        const Eigen::VectorXd rhs_free = -(K_fd * u_D);
+        const Eigen::VectorXd u_F = morph_cholesky.solve(rhs_free);
+        check(morph_cholesky, "the mesh-morphing solve");
+        for (unsigned int d = 0; d < n; ++d)
+          if (free_index[d] >= 0)
+            field[k][d] = u_F[free_index[d]];
+      }
+  }
+
+  void MagnetostaticProblem::Implementation::move_to(double position)
+  {
+    const unsigned int n = morph_dof_handler.n_dofs();
+    std::array<Vector<double>, 2> boundary{Vector<double>(n), Vector<double>(n)}, displacement;
+    for (unsigned int d = 0; d < n; ++d)
+      if (moving_dof[d])
+        {
+          const auto u = body_displacement(reference_vertices[vertex_of_dof[d]], position);
+          boundary[0][d] = u[0];
+          boundary[1][d] = u[1];
+        }
+    extend(boundary, displacement);
+
+    std::vector<Point<2>> moved(reference_vertices.size());
+    for (unsigned int d = 0; d < n; ++d)
+      {
+        const unsigned int v = vertex_of_dof[d];
+        moved[v] = reference_vertices[v] + Point<2>(displacement[0][d], displacement[1][d]);
+      }
+    // A morphed cell must stay convex and counterclockwise: cross products at its four corners
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        static const unsigned int ring[4] = {0, 1, 3, 2}; // counterclockwise in deal.II's numbering
+        for (unsigned int k = 0; k < 4; ++k)
+          {
+            const Point<2> &p = moved[cell->vertex_index(ring[k])], &a = moved[cell->vertex_index(ring[(k + 1) % 4])],
+                           &b = moved[cell->vertex_index(ring[(k + 3) % 4])];
+            const double cross = (a[0] - p[0]) * (b[1] - p[1]) - (a[1] - p[1]) * (b[0] - p[0]);
+            if (!(cross > 0))
+              throw std::runtime_error("mesh morphing: the motion to " + std::to_string(position) +
+                                       " inverts a cell of the air around the moving body (the motion is "
+                                       "too large for the gap)");
+          }
+      }
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (unsigned int v = 0; v < 4; ++v)
+        cell->vertex(v) = moved[cell->vertex_index(v)];
+    s = position;
+    update_cell_geometry();
+
+    // virtual velocity of the body at its current position, extended into the air (for the MST)
+    for (unsigned int d = 0; d < n; ++d)
+      if (moving_dof[d])
+        {
+          const auto w = body_velocity(moved[vertex_of_dof[d]]);
+          boundary[0][d] = w[0];
+          boundary[1][d] = w[1];
+        }
+      else
+        boundary[0][d] = boundary[1][d] = 0;
+    extend(boundary, velocity);
+  }
+
+  void MagnetostaticProblem::Implementation::update_cell_geometry()
+  {
+    FEValues<2> fe_values(fe, quadrature, update_gradients | update_JxW_values);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell(), n_q = quadrature.size();
+    cell_geometry.resize(triangulation.n_active_cells());
+    shape_values.reinit(n_q, dofs_per_cell);
+    for (unsigned int q = 0; q < n_q; ++q)
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        shape_values(q, i) = fe.shape_value(i, quadrature.point(q));
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        CellGeometry &g = cell_geometry[cell->active_cell_index()];
+        fe_values.reinit(cell);
+        g.JxW.resize(n_q);
+        g.shape_gradients.resize(n_q * dofs_per_cell);
+        g.dofs.resize(dofs_per_cell);
+        cell->get_dof_indices(g.dofs);
+        g.material = static_cast<int>(cell->material_id());
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            g.JxW[q] = fe_values.JxW(q);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              g.shape_gradients[q * dofs_per_cell + i] = fe_values.shape_grad(i, q);
+          }
+      }
+  }
+} // namespace servodrift::magnetics
