@@ -56,14 +56,15 @@ namespace servodrift::magnetics
     const auto &d = *impl;
     const unsigned int dofs_per_cell = d.fe.n_dofs_per_cell(), n_q = d.quadrature.size();
     double W = 0;
-    for (const auto &g : d.cell_geometry)
+    for (std::size_t c = 0; c < d.cell_material.size(); ++c)
       {
-        const Material &m = d.materials.at(g.material);
+        const Material &m = *d.cell_material[c];
         for (unsigned int q = 0; q < n_q; ++q)
           {
+            const std::size_t cq = c * n_q + q;
             Tensor<1, 2> grad_A;
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              grad_A += d.solution[g.dofs[i]] * g.shape_gradients[q * dofs_per_cell + i];
+              grad_A += d.solution[d.cell_dofs[c * dofs_per_cell + i]] * d.cell_geometry.shape_gradients[cq * dofs_per_cell + i];
             const Tensor<1, 2> B = flux_density(grad_A);
             const double b2 = B * B;
             double w = 0; // coenergy density w' = int_0^H B dH'
@@ -85,7 +86,7 @@ namespace servodrift::magnetics
                   w = m.curve->coenergy_density(m.curve->field_strength(std::sqrt(b2)));
                   break;
               }
-            W += w * g.JxW[q];
+            W += w * d.cell_geometry.JxW[cq];
           }
       }
     return d.depth * W;
@@ -95,9 +96,10 @@ namespace servodrift::magnetics
   {
     auto &d = *impl;
     const double s0 = d.s, current = d.current;
-    // the state at s0, restored afterwards without recomputing it
+    // the state at s0, restored afterwards without recomputing it (its cell geometry kept aside by a
+    // swap, whose buffers the solves at s0 +- step then fill)
     const Vector<double> A0 = d.solution;
-    const auto geometry0 = d.cell_geometry;
+    std::swap(d.cell_geometry, d.kept_cell_geometry);
     const auto velocity0 = d.velocity;
     const std::vector<Point<2>> vertices0 = d.triangulation.get_vertices();
     d.move_to(s0 + step);
@@ -111,7 +113,7 @@ namespace servodrift::magnetics
       for (unsigned int v = 0; v < 4; ++v)
         cell->vertex(v) = vertices0[cell->vertex_index(v)];
     d.s = s0;
-    d.cell_geometry = geometry0;
+    std::swap(d.cell_geometry, d.kept_cell_geometry);
     d.velocity = velocity0;
     d.solution = A0;
     return (W_plus - W_minus) / (2 * step);

@@ -94,6 +94,22 @@ namespace servodrift::magnetics
       }
     cholesky.analyzePattern(eigen_jacobian); // symbolic factorisation: once per mesh
     check(cholesky, "the symbolic analysis");
+
+    // what the assembly needs of each cell that the motion does not change
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell(), n_q = quadrature.size();
+    cell_dofs.resize(triangulation.n_active_cells() * dofs_per_cell);
+    cell_material.resize(triangulation.n_active_cells());
+    std::vector<types::global_dof_index> dofs(dofs_per_cell);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        std::copy(dofs.begin(), dofs.end(), cell_dofs.begin() + std::ptrdiff_t(cell->active_cell_index() * dofs_per_cell));
+        cell_material[cell->active_cell_index()] = &material(cell);
+      }
+    shape_values.reinit(n_q, dofs_per_cell);
+    for (unsigned int q = 0; q < n_q; ++q)
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        shape_values(q, i) = fe.shape_value(i, quadrature.point(q));
   }
 
   void MagnetostaticProblem::Implementation::assemble_system(const Vector<double> &A, bool with_matrix)
@@ -105,19 +121,21 @@ namespace servodrift::magnetics
     FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
     Vector<double> cell_rhs(dofs_per_cell);
     std::vector<double> A_local(dofs_per_cell);
-    for (const CellGeometry &g : cell_geometry)
+    std::vector<types::global_dof_index> dofs(dofs_per_cell);
+    for (std::size_t c = 0; c < cell_material.size(); ++c)
       {
-        const Material &m = materials.at(g.material);
+        const Material &m = *cell_material[c];
+        const types::global_dof_index *cell_dof = &cell_dofs[c * dofs_per_cell];
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          A_local[i] = A[g.dofs[i]];
+          A_local[i] = A[dofs[i] = cell_dof[i]];
         cell_matrix = 0;
         cell_rhs = 0;
         const double J = m.current_density * current;
         const double Brx = m.remanence[0], Bry = m.remanence[1]; // magnet: H = nu_m (B - B_r)
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            const double JxW = g.JxW[q];
-            const Tensor<1, 2> *grad = &g.shape_gradients[q * dofs_per_cell];
+            const double JxW = cell_geometry.JxW[c * n_q + q];
+            const Tensor<1, 2> *grad = &cell_geometry.shape_gradients[(c * n_q + q) * dofs_per_cell];
             Tensor<1, 2> grad_A;
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               grad_A += A_local[i] * grad[i];
@@ -145,9 +163,9 @@ namespace servodrift::magnetics
               }
           }
         if (with_matrix)
-          constraints.distribute_local_to_global(cell_matrix, cell_rhs, g.dofs, jacobian, rhs);
+          constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, jacobian, rhs);
         else
-          constraints.distribute_local_to_global(cell_rhs, g.dofs, rhs);
+          constraints.distribute_local_to_global(cell_rhs, dofs, rhs);
       }
   }
 
@@ -210,10 +228,7 @@ namespace servodrift::magnetics
         const double r_trial = residual_norm(trial);
         ++stats.iterations;
         if (!(r_trial < 0.1 * r))
-          {
-            residual_norm(solution); // restore rhs at the accepted iterate
-            break;
-          }
+          break; // rhs is the trial's: Newton's first assembly below is at the accepted iterate
         solution = trial;
         r = r_trial;
       }

@@ -77,16 +77,19 @@ namespace servodrift::magnetics
     std::vector<std::ptrdiff_t> eigen_position; ///< deal.II storage index -> Eigen value index
     Cholesky cholesky;
     bool have_factorization = false;       ///< a numeric factorisation of a recent Jacobian exists
-    /// Geometry of every cell at the current position (JxW, shape gradients, DoF indices): the
-    /// assembly loops of the Newton and chord iterations are pure arithmetic on it.
+    /// DoF indices and material of every cell: fixed by the topology, which morphing keeps.
+    std::vector<types::global_dof_index> cell_dofs; ///< [cell * dofs_per_cell + i]
+    std::vector<const Material *> cell_material;    ///< [cell], into `materials'
+    /// Geometry of every cell at one position: the assembly loops of the Newton and chord iterations
+    /// are pure arithmetic on it. Flat arrays, so that virtual work keeps a position's geometry by a
+    /// swap, without allocations.
     struct CellGeometry
     {
-      std::vector<double> JxW;                  ///< [q]
-      std::vector<Tensor<1, 2>> shape_gradients; ///< [q * dofs_per_cell + i]
-      std::vector<types::global_dof_index> dofs;
-      int material;
+      std::vector<double> JxW;                   ///< [cell * n_q + q]
+      std::vector<Tensor<1, 2>> shape_gradients; ///< [(cell * n_q + q) * dofs_per_cell + i]
     };
-    std::vector<CellGeometry> cell_geometry;
+    CellGeometry cell_geometry;       ///< at the current position
+    CellGeometry kept_cell_geometry;  ///< virtual work: the position's own, while it solves beside it
     FullMatrix<double> shape_values; ///< [q][i] on the reference cell
     void update_cell_geometry();
     std::map<double, double> source_norm;  ///< ||R(A = 0)|| per current: the scale of the tolerance
@@ -113,7 +116,9 @@ namespace servodrift::magnetics
     void setup_morphing();
     std::array<double, 2> body_displacement(const Point<2> &x, double position) const;
     std::array<double, 2> body_velocity(const Point<2> &x_now) const;
-    void extend(const std::array<Vector<double>, 2> &boundary_values, std::array<Vector<double>, 2> &field) const;
+    /// The Laplace extension of fields given at the fixed DoFs (columns of `boundary', rows the
+    /// morph DoFs; its free rows are ignored) into the morphing air: one solve for every column.
+    Eigen::MatrixXd extend(const Eigen::MatrixXd &boundary) const;
     void move_to(double position);
 
     void assemble_system(const Vector<double> &A, bool with_matrix);

@@ -105,50 +105,50 @@ namespace servodrift::magnetics
     return {-(x_now[1] - motion.point[1]), x_now[0] - motion.point[0]}; // e_z x (x - pivot)
   }
 
-  void MagnetostaticProblem::Implementation::extend(const std::array<Vector<double>, 2> &boundary,
-                                                    std::array<Vector<double>, 2> &field) const
+  Eigen::MatrixXd MagnetostaticProblem::Implementation::extend(const Eigen::MatrixXd &boundary) const
   {
-    // u_F = -K_ff^-1 K_fd u_D on each component
-    const unsigned int n = morph_dof_handler.n_dofs();
-    for (unsigned int k = 0; k < 2; ++k)
-      {
-        field[k].reinit(n);
-        Eigen::VectorXd u_D(K_fd.cols());
-        for (unsigned int d = 0; d < n; ++d)
-          if (fixed_index[d] >= 0)
-            {
-              u_D[fixed_index[d]] = boundary[k][d];
-              field[k][d] = boundary[k][d];
-            }
-        if (K_ff.rows() == 0)
-          continue;
-        const Eigen::VectorXd rhs_free = -(K_fd * u_D);
-        const Eigen::VectorXd u_F = morph_cholesky.solve(rhs_free);
-        check(morph_cholesky, "the mesh-morphing solve");
-        for (unsigned int d = 0; d < n; ++d)
-          if (free_index[d] >= 0)
-            field[k][d] = u_F[free_index[d]];
-      }
+    // U_F = -K_ff^-1 K_fd U_D, every column in one solve (the supernodal factor's triangular solves
+    // then run as matrix-matrix products)
+    const Eigen::Index n = boundary.rows(), m = boundary.cols();
+    Eigen::MatrixXd field = Eigen::MatrixXd::Zero(n, m), U_D(K_fd.cols(), m);
+    for (Eigen::Index d = 0; d < n; ++d)
+      if (fixed_index[d] >= 0)
+        {
+          U_D.row(fixed_index[d]) = boundary.row(d);
+          field.row(d) = boundary.row(d);
+        }
+    if (K_ff.rows() == 0)
+      return field;
+    const Eigen::MatrixXd rhs_free = -(K_fd * U_D);
+    const Eigen::MatrixXd U_F = morph_cholesky.solve(rhs_free);
+    check(morph_cholesky, "the mesh-morphing solve");
+    for (Eigen::Index d = 0; d < n; ++d)
+      if (free_index[d] >= 0)
+        field.row(d) = U_F.row(free_index[d]);
+    return field;
   }
 
   void MagnetostaticProblem::Implementation::move_to(double position)
   {
+    // the body's displacement (columns 0, 1) and its virtual velocity at the new position (2, 3, for
+    // the MST), both extended into the air by one solve
     const unsigned int n = morph_dof_handler.n_dofs();
-    std::array<Vector<double>, 2> boundary{Vector<double>(n), Vector<double>(n)}, displacement;
+    Eigen::MatrixXd boundary = Eigen::MatrixXd::Zero(n, 4);
     for (unsigned int d = 0; d < n; ++d)
       if (moving_dof[d])
         {
-          const auto u = body_displacement(reference_vertices[vertex_of_dof[d]], position);
-          boundary[0][d] = u[0];
-          boundary[1][d] = u[1];
+          const Point<2> &x = reference_vertices[vertex_of_dof[d]];
+          const auto u = body_displacement(x, position);
+          const auto w = body_velocity(x + Point<2>(u[0], u[1]));
+          boundary.row(d) << u[0], u[1], w[0], w[1];
         }
-    extend(boundary, displacement);
+    const Eigen::MatrixXd extended = extend(boundary);
 
     std::vector<Point<2>> moved(reference_vertices.size());
     for (unsigned int d = 0; d < n; ++d)
       {
         const unsigned int v = vertex_of_dof[d];
-        moved[v] = reference_vertices[v] + Point<2>(displacement[0][d], displacement[1][d]);
+        moved[v] = reference_vertices[v] + Point<2>(extended(d, 0), extended(d, 1));
       }
     // A morphed cell must stay convex and counterclockwise: cross products at its four corners
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -170,43 +170,29 @@ namespace servodrift::magnetics
         cell->vertex(v) = moved[cell->vertex_index(v)];
     s = position;
     update_cell_geometry();
-
-    // virtual velocity of the body at its current position, extended into the air (for the MST)
-    for (unsigned int d = 0; d < n; ++d)
-      if (moving_dof[d])
-        {
-          const auto w = body_velocity(moved[vertex_of_dof[d]]);
-          boundary[0][d] = w[0];
-          boundary[1][d] = w[1];
-        }
-      else
-        boundary[0][d] = boundary[1][d] = 0;
-    extend(boundary, velocity);
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        velocity[k].reinit(n);
+        for (unsigned int d = 0; d < n; ++d)
+          velocity[k][d] = extended(d, 2 + k);
+      }
   }
 
   void MagnetostaticProblem::Implementation::update_cell_geometry()
   {
     FEValues<2> fe_values(fe, quadrature, update_gradients | update_JxW_values);
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell(), n_q = quadrature.size();
-    cell_geometry.resize(triangulation.n_active_cells());
-    shape_values.reinit(n_q, dofs_per_cell);
-    for (unsigned int q = 0; q < n_q; ++q)
-      for (unsigned int i = 0; i < dofs_per_cell; ++i)
-        shape_values(q, i) = fe.shape_value(i, quadrature.point(q));
+    cell_geometry.JxW.resize(triangulation.n_active_cells() * n_q);
+    cell_geometry.shape_gradients.resize(triangulation.n_active_cells() * n_q * dofs_per_cell);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        CellGeometry &g = cell_geometry[cell->active_cell_index()];
         fe_values.reinit(cell);
-        g.JxW.resize(n_q);
-        g.shape_gradients.resize(n_q * dofs_per_cell);
-        g.dofs.resize(dofs_per_cell);
-        cell->get_dof_indices(g.dofs);
-        g.material = static_cast<int>(cell->material_id());
+        const std::size_t first_q = cell->active_cell_index() * n_q;
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            g.JxW[q] = fe_values.JxW(q);
+            cell_geometry.JxW[first_q + q] = fe_values.JxW(q);
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              g.shape_gradients[q * dofs_per_cell + i] = fe_values.shape_grad(i, q);
+              cell_geometry.shape_gradients[(first_q + q) * dofs_per_cell + i] = fe_values.shape_grad(i, q);
           }
       }
   }
