@@ -102,13 +102,26 @@ namespace servodrift::magnetics
     std::swap(d.cell_geometry, d.kept_cell_geometry);
     const auto velocity0 = d.velocity;
     const std::vector<Point<2>> vertices0 = d.triangulation.get_vertices();
+    // Each solve starts from a first-order prediction: +step from the tangent that the last position
+    // left at this current (if any), -step by reflecting the +step solution through A0. The two
+    // solutions then give the tangent at s0 for the next position's solve.
+    const bool tangent_known = d.tangent.known && d.tangent.current == current;
     d.move_to(s0 + step);
+    d.solution = A0;
+    if (tangent_known)
+      d.solution.add(step, d.tangent.dA_ds);
     d.solve(current, d.tolerance, 50);
     const double W_plus = coenergy();
-    d.solution = A0;
+    const Vector<double> A_plus = d.solution;
     d.move_to(s0 - step);
+    d.solution.sadd(-1, 2, A0); // 2 A0 - A_plus
     d.solve(current, d.tolerance, 50);
     const double W_minus = coenergy();
+    d.tangent.dA_ds = A_plus;
+    d.tangent.dA_ds.add(-1, d.solution);
+    d.tangent.dA_ds /= 2 * step;
+    d.tangent.A = A0;
+    d.tangent.position = s0, d.tangent.current = current, d.tangent.known = true;
     for (const auto &cell : d.triangulation.active_cell_iterators())
       for (unsigned int v = 0; v < 4; ++v)
         cell->vertex(v) = vertices0[cell->vertex_index(v)];

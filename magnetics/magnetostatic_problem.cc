@@ -209,6 +209,7 @@ namespace servodrift::magnetics
     constraints.set_zero(solution);
     const double target = tolerance * stats.initial_residual;
     double r = residual_norm(solution);
+    stats.start_residual = r;
 
     // Chord iterations first: the factorisation of the last Jacobian (previous angle or current, often
     // the same mesh position) is reused while it still contracts the residual at least tenfold per
@@ -288,6 +289,15 @@ namespace servodrift::magnetics
 
   NewtonStatistics MagnetostaticProblem::solve(double current, double tolerance, unsigned int max_iterations)
   {
+    // In a sweep over positions the solution before the move is a zeroth-order start; where virtual
+    // work left dA/ds at this current, the first-order one. RV-1's sweep: the starting residual
+    // 1.8e-2 -> 7e-4 of ||R(0)||, 13 % fewer chord and Newton steps (doc/performance.md).
+    auto &d = *impl;
+    if (d.tangent.known && d.tangent.current == current && d.tangent.position != d.s)
+      {
+        d.solution = d.tangent.A;
+        d.solution.add(d.s - d.tangent.position, d.tangent.dA_ds);
+      }
     return impl->solve(current, tolerance, max_iterations);
   }
 

@@ -55,6 +55,7 @@ namespace servodrift::magnetics
   {
     unsigned int iterations = 0;
     double initial_residual = 0; ///< ||R(A = 0)||: the scale of the sources
+    double start_residual = 0;   ///< ||R|| of the iterate the solve started from
     double final_residual = 0;
   };
 
@@ -76,7 +77,9 @@ namespace servodrift::magnetics
     double position() const;
 
     /// Solves at excitation current `current' [A] (coil current densities scale with it), starting
-    /// from the last solution. Newton with backtracking line search until ||R|| <= tolerance ||R(0)||.
+    /// from the last solution, or, where virtual work at another position and this current left the
+    /// derivative dA/ds, from its first-order prediction at this position. Chord steps on the last
+    /// factorisation, then Newton with backtracking line search until ||R|| <= tolerance ||R(0)||.
     NewtonStatistics solve(double current, double tolerance = 1e-10, unsigned int max_iterations = 50);
 
     /// Weighted Maxwell stress tensor: torque [N*m] (rotation) or force [N] (translation) on the body.
@@ -84,7 +87,7 @@ namespace servodrift::magnetics
     /// Coenergy W' = w_d int int_0^H B dH' dA [J].
     double coenergy() const;
     /// dW'/ds at constant current by central differences over +-step; position and solution are
-    /// restored afterwards.
+    /// restored afterwards, and dA/ds is kept for the next solve at another position.
     double virtual_work_force(double step);
 
     /// Mean of B along `component' (0: x, 1: y) over the cells of a material [T].

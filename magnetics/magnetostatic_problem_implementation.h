@@ -93,6 +93,15 @@ namespace servodrift::magnetics
     FullMatrix<double> shape_values; ///< [q][i] on the reference cell
     void update_cell_geometry();
     std::map<double, double> source_norm;  ///< ||R(A = 0)|| per current: the scale of the tolerance
+    /// The solution's derivative in the position at one position and current, dA/ds, from virtual
+    /// work's central difference: a solve at another position and the same current starts from the
+    /// first-order prediction A + (s - position) dA/ds instead of A (MagnetostaticProblem::solve).
+    struct Tangent
+    {
+      bool known = false;
+      double position = 0, current = 0;
+      Vector<double> A, dA_ds;
+    } tangent;
 
     // morphing: vertex displacement (Q1) extended into the morphing air by a Laplace solve
     FE_Q<2> fe_morph;

@@ -166,6 +166,36 @@ TEST(TorqueMotorField, TorqueIsSmoothInTheAngleAtHundredthDegreeSteps)
     EXPECT_GT(T[k], T[k - 1]);
 }
 
+TEST(TorqueMotorField, VirtualWorkTangentStartsTheNextAngle)
+{
+  // Virtual work leaves dA/ds, and the next solve at another angle and the same current starts from
+  // A + (theta - theta_0) dA/ds instead of A. Both starts end at ||R|| <= 1e-10 ||R(0)||, so their
+  // torques agree to round-off of that tolerance: 1e-7 (RV-1's default sweep moved by 1.2e-8 at most).
+  // The first-order start must be closer, by at least 5x in the residual (RV-1's sweep: 25x), and
+  // take no more steps.
+  const auto v = coarse_rv1();
+  TorqueMotorFieldModel with_tangent(v, 40), without(v, 40);
+  unsigned int steps_with = 0, steps_without = 0;
+  double largest_difference = 0, start_with = 0, start_without = 0;
+  for (int k = 1; k <= 5; ++k)
+    {
+      const auto a = with_tangent.torque(k * tenth, 0.01, true), b = without.torque(k * tenth, 0.01, false);
+      if (k > 1) // the first starts from A = 0 in both
+        {
+          steps_with += a.newton.iterations, steps_without += b.newton.iterations;
+          start_with = std::max(start_with, a.newton.start_residual / a.newton.initial_residual);
+          start_without = std::max(start_without, b.newton.start_residual / b.newton.initial_residual);
+        }
+      largest_difference = std::max(largest_difference, relative(a.stress_tensor, b.stress_tensor));
+    }
+  std::cout << "angles 0.2-0.5 deg: " << steps_with << " steps from the tangent (start residual up to "
+            << start_with << " of ||R(0)||), " << steps_without << " from the last solution (" << start_without
+            << "); torques up to " << largest_difference << " apart\n";
+  EXPECT_LT(largest_difference, 1e-7);
+  EXPECT_LT(start_with, 0.2 * start_without);
+  EXPECT_LE(steps_with, steps_without);
+}
+
 TEST(TorqueMotorField, TemperatureTrendOfThePaper)
 {
   // [K22] Fig. 7: the torque at 0.1 deg falls by about 4-5 % from 40 to 120 degC (B_r(T), E8, and the
