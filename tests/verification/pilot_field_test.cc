@@ -1,5 +1,6 @@
 // Field level of the pilot stage (flow/pilot_field, issue 5): the axisymmetric fixed orifice and
-// nozzle-flapper cases of RV-1 at 40 degC on their default meshes, and the stage's flagged rows.
+// nozzle-flapper cases of RV-1 at 40 degC on their default meshes, as physics (their numerics:
+// pilot_field_numerics_test.cc; the stage's sweep: pilot_field_stage_test.cc).
 // - the meshes resolve what the issue asks: 30 cells across the bore radius, 20 across the gap;
 // - fixed orifice against Lichtarowicz (E21) within 5 %: laminar at Re_0 = 110..490 (measured
 //   -1.3 .. -4.6 %), two-layer k-epsilon at Re_0 = 2000 and 5000 (-2.8, -3.5 %);
@@ -7,38 +8,31 @@
 //   C_dn within 10 % of E22; the force's trend in the gap, at fixed dp and in the orifice bridge;
 // - mesh convergence (resolution 0.7, 1, 1.4: below 1 % between the two finest) and insensitivity
 //   to the outlet radius and the plenum size (below 0.5 %);
-// - laminar cavitating nozzle cases follow the quasi-static branch whatever their start;
-// - the stage's orifice path over temperature lands on the answer of a start from rest;
-// - bad cases are refused (closed gap, reversed pressure difference) or flagged (not converged).
+// - laminar cavitating nozzle cases follow the quasi-static branch whatever their start; the
+//   cavitating null; the mixture's mass balance in the liquid cells;
+// - bad cases are refused (closed gap, reversed pressure difference).
 #include "common/error.h"
 #include "common/units.h"
 #include "flow/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
-#include "flow/pilot_field_stage.h"
-#include "common/table.h"
 #include "tests/support/test_support.h"
+#include "tests/verification/pilot_field_test_cases.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 
 namespace servodrift::flow
 {
+  using test_cases::nozzle_at_null;
+  using test_cases::orifice_laminar;
+
   namespace
   {
-    ValveDescription laminar_valve()
-    {
-      ValveDescription v = test::valve();
-      v.flow_solver.tolerance = 1e-6;
-      return v;
-    }
-
     /// Cells the segment from a to b crosses: those whose vertices lie on both sides of its line and
     /// whose centre lies between its ends.
     std::size_t cells_across(const FvMesh &mesh, const Vector2 &a, const Vector2 &b)
@@ -64,7 +58,7 @@ namespace servodrift::flow
 
   TEST(PilotField, MeshesResolveTheBoreAndTheGap)
   {
-    const ValveDescription v = laminar_valve();
+    const ValveDescription v = test::valve();
     const PilotFieldCase c = pilot_field_case(v, 40);
     const PilotField orifice(v, PilotGeometry::fixed_orifice, c);
     const double r0 = orifice.bore_radius(), l = 0.5e-3;
@@ -81,7 +75,7 @@ namespace servodrift::flow
 
   TEST(PilotField, FixedOrificeFollowsLichtarowiczInTheLaminarRange)
   {
-    const ValveDescription v = laminar_valve();
+    const ValveDescription v = test::valve();
     const PilotClosedForms closed_forms(v, 40);
     PilotField orifice(v, PilotGeometry::fixed_orifice, pilot_field_case(v, 40));
     for (double dp : {20e3, 100e3, 400e3}) // Re_0 = 110, 247, 493; continuation from one to the next
@@ -99,7 +93,7 @@ namespace servodrift::flow
 
   TEST(PilotField, NozzleFlapperConservesMomentumAndFollowsTheGap)
   {
-    const ValveDescription v = laminar_valve();
+    const ValveDescription v = test::valve();
     const PilotClosedForms closed_forms(v, 40);
     const PilotFieldCase c = pilot_field_case(v, 40);
     const double A_N = units::pi * std::pow(closed_forms.geometry().nozzle_diameter, 2) / 4;
@@ -135,7 +129,7 @@ namespace servodrift::flow
 
   TEST(PilotField, RefusesClosedGapsAndReversedPressures)
   {
-    const ValveDescription v = laminar_valve();
+    const ValveDescription v = test::valve();
     const PilotFieldCase c = pilot_field_case(v, 40);
     EXPECT_THROW(PilotField(v, PilotGeometry::nozzle_flapper, c, 0.0), InputError);
     PilotField orifice(v, PilotGeometry::fixed_orifice, c);
@@ -152,23 +146,6 @@ namespace servodrift::flow
                                                 v.pilot.fixed_orifice_length / v.pilot.fixed_orifice_diameter);
     }
 
-    /// RV-1's nozzle at its null conditions (40 degC, dp = p_c - p_r = 10.4 MPa, cavitation on),
-    /// solved from rest at `resolution' and gap h; returns the result
-    PilotFieldResult nozzle_at_null(const ValveDescription &v, double h, double resolution = 1)
-    {
-      PilotFieldCase c = pilot_field_case(v, 40);
-      c.resolution = resolution;
-      PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, h);
-      return nozzle.solve(10.4e6);
-    }
-
-    PilotFieldResult orifice_laminar(const ValveDescription &v, double resolution = 1)
-    {
-      PilotFieldCase c = pilot_field_case(v, 40);
-      c.resolution = resolution;
-      PilotField orifice(v, PilotGeometry::fixed_orifice, c);
-      return orifice.solve(400e3); // Re_0 = 493, laminar
-    }
   } // namespace
 
   // k-epsilon (two-layer) above the laminar range. The Reynolds number is set by the viscosity at
@@ -178,7 +155,7 @@ namespace servodrift::flow
   // -3.7 %.
   TEST(PilotField, FixedOrificeFollowsLichtarowiczWithKEpsilon)
   {
-    ValveDescription v = laminar_valve();
+    ValveDescription v = test::valve();
     v.pilot.field_cavitation = false;
     PilotFieldCase c = pilot_field_case(v, 40);
     c.turbulence = FlowSolverParameters::Turbulence::k_epsilon;
@@ -202,46 +179,6 @@ namespace servodrift::flow
       }
   }
 
-  // A cycle caught and damped: RV-1's fixed orifice at 60 degC (k-epsilon, cavitation on), carried
-  // from 15.45 to 20.6 MPa. At 20.6 MPa the cells at the inner edge of the cavity switch between liquid
-  // and vapour every six iterations and, with the default pressure relaxation 0.7, the iteration
-  // cycles (continuity stuck at 1.4e-2 for 2 000 iterations, measured; doc/method.md). The cycle
-  // window (200 iterations) lowers the relaxation and the case converges. The same case run with 0.5
-  // from the start and no cycle window must give the same answer: the converged fields do not
-  // depend on the pressure relaxation. Tolerance 1e-4 relative: each run stops when its flow rate has
-  // changed by less than 1e-4 over 50 iterations (measured: identical to 5 digits, C_d 0.61551).
-  TEST(PilotField, CaughtCyclesLeaveTheAnswerUnchanged)
-  {
-    ValveDescription v = laminar_valve();
-    // the chamber the cycle was traced on (the default is 30 since; there the reference run, 0.5 from
-    // the start and no cycle window, did not converge in 2 000 iterations, while the default path
-    // converges to the same C_d, 0.61551, in 839 iterations: measured)
-    v.pilot.field_chamber_length = 20;
-    PilotFieldCase c = pilot_field_case(v, 60);
-    c.turbulence = FlowSolverParameters::Turbulence::k_epsilon;
-    PilotField start(v, PilotGeometry::fixed_orifice, c);
-    const PilotFieldResult at_15 = start.solve(15.45e6);
-    ASSERT_TRUE(at_15.cavitating);
-
-    PilotField caught(v, PilotGeometry::fixed_orifice, c);
-    caught.initialize_from(start);
-    const PilotFieldResult r = caught.solve(20.6e6);
-
-    ValveDescription steady = v;
-    steady.flow_solver.pressure_relaxation = 0.5;
-    steady.flow_solver.cycle_window = 0;
-    PilotField lower(steady, PilotGeometry::fixed_orifice, c);
-    lower.initialize_from(start);
-    const PilotFieldResult reference = lower.solve(20.6e6);
-
-    std::printf("fixed orifice, 60 degC, 20.6 MPa: C_d %.5f in %u iterations, pressure relaxation lowered to %.3g; "
-                "with 0.5 throughout C_d %.5f in %u iterations\n",
-                r.discharge_coefficient, r.iterations, r.pressure_relaxation, reference.discharge_coefficient,
-                reference.iterations);
-    EXPECT_TRUE(r.cavitating);
-    EXPECT_LT(r.pressure_relaxation, v.flow_solver.pressure_relaxation); // the cycle was caught
-    EXPECT_NEAR(r.discharge_coefficient / reference.discharge_coefficient, 1, 1e-4);
-  }
 
   // Laminar cavitating nozzle cases have more than one steady solution: RV-1's null gap at 120 degC
   // and 3.09 MPa (the sweep's lowest nozzle pressure) carried from its start-up (Re 300, 0.1 MPa) in
@@ -255,7 +192,7 @@ namespace servodrift::flow
   // on depends on rounding (a gap 1 ulp smaller took the 110 degC jump to the quasi-static branch).
   TEST(PilotField, LaminarCavitatingNozzleFollowsTheQuasiStaticBranch)
   {
-    const ValveDescription v = laminar_valve();
+    const ValveDescription v = test::valve();
     PilotFieldCase c = pilot_field_case(v, 120);
     c.turbulence = FlowSolverParameters::Turbulence::laminar;
     const double gap = v.pilot.null_gap, dp = 0.15 * (v.operating.supply_pressure - v.operating.return_pressure);
@@ -297,7 +234,7 @@ namespace servodrift::flow
   // - E23 is reported beside (C12 (2)): the suction ring at the land makes the field force lower.
   TEST(PilotField, NozzleAtTheNullWithCavitation)
   {
-    const ValveDescription v = laminar_valve();
+    const ValveDescription v = test::valve();
     const PilotClosedForms closed_forms(v, 40);
     const PilotFieldCase c = pilot_field_case(v, 40);
     const auto &g = closed_forms.geometry();
@@ -362,7 +299,7 @@ namespace servodrift::flow
   // outflow is 0.25 % below the inflow (doc/validation.md, known limits).
   TEST(PilotField, CavitatingCaseBalancesTheMixturesMassInItsLiquidCells)
   {
-    const ValveDescription v = laminar_valve();
+    const ValveDescription v = test::valve();
     PilotFieldCase c = pilot_field_case(v, 40);
     c.resolution = 0.5;
     PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, 40e-6);
@@ -404,7 +341,7 @@ namespace servodrift::flow
   // between the two finest C_d and force change by less than 1 % (the issue's tolerance).
   TEST(PilotField, MeshConvergence)
   {
-    ValveDescription v = laminar_valve();
+    ValveDescription v = test::valve();
     v.flow_solver.max_iterations = 15000; // SIMPLEC's rate falls with the cell count: the finest needs about 7000
     std::vector<PilotFieldResult> nozzle, orifice;
     for (double resolution : {0.7, 1.0, 1.4})
@@ -419,35 +356,12 @@ namespace servodrift::flow
     EXPECT_LT(test::relative(orifice[1].discharge_coefficient, orifice[2].discharge_coefficient), 0.01);
   }
 
-  // Grid sequencing (`Pilot stage/Field grid sequencing'): a case from rest at resolution 1.5 starts
-  // from its solution at 0.75, carried over, instead of the laminar start-up ladder on its own
-  // mesh. Both end converged on the same mesh, so C_dn and force agree to what separates two
-  // converged states of the cavitating case: the force settles to 1e-4 over 50 iterations, and
-  // the vapour region's hysteresis lets converged states from different paths differ by up to
-  // 0.3 % (measured, RV-1's null at resolution 2, laminar); the fine mesh needs fewer iterations.
-  TEST(PilotField, GridSequencingKeepsTheFineMeshAnswer)
-  {
-    ValveDescription v = laminar_valve();
-    v.flow_solver.turbulence = FlowSolverParameters::Turbulence::k_epsilon;
-    const PilotFieldResult sequenced = nozzle_at_null(v, 40e-6, 1.5);
-    v.pilot.field_grid_sequencing = false;
-    const PilotFieldResult ladder = nozzle_at_null(v, 40e-6, 1.5);
-    std::printf("resolution 1.5, k-epsilon: sequenced C_dn %.5f F %.5f N (%u + %u coarse iterations), "
-                "start-up ladder C_dn %.5f F %.5f N (%u iterations)\n",
-                sequenced.discharge_coefficient, sequenced.flapper_force, sequenced.iterations,
-                sequenced.coarse_mesh_iterations, ladder.discharge_coefficient, ladder.flapper_force, ladder.iterations);
-    EXPECT_GT(sequenced.coarse_mesh_iterations, 0u);
-    EXPECT_EQ(ladder.coarse_mesh_iterations, 0u);
-    EXPECT_LT(test::relative(sequenced.discharge_coefficient, ladder.discharge_coefficient), 0.003);
-    EXPECT_LT(test::relative(sequenced.flapper_force, ladder.flapper_force), 0.003);
-    EXPECT_LT(sequenced.iterations, ladder.iterations);
-  }
 
   // The artificial boundaries do not matter: the nozzle's outlet radius 4 -> 6 land radii and the
   // orifice's plenum 6 -> 9 bore radii change C_d and force by less than 0.5 % (the issue's tolerance).
   TEST(PilotField, InsensitiveToOutletRadiusAndPlenumSize)
   {
-    ValveDescription v = laminar_valve();
+    ValveDescription v = test::valve();
     const PilotFieldResult nozzle = nozzle_at_null(v, 40e-6), orifice = orifice_laminar(v);
     v.pilot.field_outlet_radius *= 1.5;
     v.pilot.field_plenum_size *= 1.5;
@@ -461,154 +375,8 @@ namespace servodrift::flow
     EXPECT_LT(test::relative(orifice_wide.discharge_coefficient, orifice.discharge_coefficient), 0.005);
   }
 
-  // `Flow solver/Momentum solver' and `Turbulence solver' reach the same null (RV-1's nozzle at its
-  // null, k-epsilon): the defaults (Jacobi on both) and the symmetric Gauss-Seidel sweep on both
-  // solve the same discrete equations, each linear solve to the same relative tolerance, so both
-  // must converge, to the same C_dn and force within the path dependence of the cavitating null
-  // (two starts 0.3 % apart, doc/validation.md: 3e-3; measured equal to 6 digits), and by different
-  // iterations (the options were taken: 610 against 653 measured).
-  TEST(PilotField, LinearSolverOptionsReachTheSameNull)
-  {
-    ValveDescription v = test::valve({"Flow solver/Turbulence model=k-epsilon"});
-    const PilotFieldResult jacobi = nozzle_at_null(v, 40e-6);
-    v.flow_solver.momentum_solver = FlowSolverParameters::MomentumSolver::bicgstab_gauss_seidel;
-    v.flow_solver.turbulence_solver = FlowSolverParameters::MomentumSolver::bicgstab_gauss_seidel;
-    const PilotFieldResult sweep = nozzle_at_null(v, 40e-6);
-    std::printf("k-epsilon nozzle at the null: Jacobi C_dn %.6f, F %.6f N in %u iterations; Gauss-Seidel C_dn %.6f, "
-                "F %.6f N in %u\n",
-                jacobi.discharge_coefficient, jacobi.flapper_force, jacobi.iterations, sweep.discharge_coefficient,
-                sweep.flapper_force, sweep.iterations);
-    EXPECT_LT(test::relative(sweep.discharge_coefficient, jacobi.discharge_coefficient), 3e-3);
-    EXPECT_LT(test::relative(sweep.flapper_force, jacobi.flapper_force), 3e-3);
-    EXPECT_NE(sweep.iterations, jacobi.iterations);
-  }
 
-  // The turbulent viscosity limit (`Pilot stage/Field turbulent viscosity limit', a multiple of the
-  // case's ideal-velocity Reynolds number) bounds transients only. RV-1's nozzle at its null with
-  // k-epsilon (gap Re about 2 500, mu_t/mu up to about 14 converged): with the default 0.1 Re
-  // (about 250) the limit is nowhere reached at convergence, and the answer is the one with the
-  // solver's own bound of 1e5 mu (C_dn and force identical to 1e-9: the limit is not reached
-  // anywhere on the path either); with 1e-3 Re (about 2.5) it holds mu_t in the jet, and the
-  // converged case is refused as not the model's solution (NotConverged, flagged by the stage).
-  TEST(PilotField, TurbulentViscosityLimitBoundsTransientsOnly)
-  {
-    ValveDescription v = test::valve({"Flow solver/Turbulence model=k-epsilon"});
-    const PilotFieldResult bounded = nozzle_at_null(v, 40e-6);
-    v.pilot.field_turbulent_viscosity_limit = 1e5; // far above any Re: the solver's own bound of 1e5 mu
-    const PilotFieldResult unbounded = nozzle_at_null(v, 40e-6);
-    std::printf("k-epsilon nozzle at the null: C_dn %.6f (limit 0.1 Re) vs %.6f (1e5 Re), F %.6f vs %.6f N\n",
-                bounded.discharge_coefficient, unbounded.discharge_coefficient, bounded.flapper_force,
-                unbounded.flapper_force);
-    EXPECT_LT(test::relative(bounded.discharge_coefficient, unbounded.discharge_coefficient), 1e-9);
-    EXPECT_LT(test::relative(bounded.flapper_force, unbounded.flapper_force), 1e-9);
-    v.pilot.field_turbulent_viscosity_limit = 1e-3;
-    try
-      {
-        nozzle_at_null(v, 40e-6);
-        ADD_FAILURE() << "a case converged with mu_t held at the limit was accepted";
-      }
-    catch (const NotConverged &e)
-      {
-        EXPECT_NE(std::string(e.what()).find("turbulent viscosity held at its limit"), std::string::npos) << e.what();
-      }
-  }
 
-  // `Pilot stage/Nozzle stall window' is the nozzle cases' stall window, and the orifice's stays the
-  // Flow solver's. A window of 20 calls the nozzle's SIMPLEC stalled within a few windows: with
-  // SIMPLEC alone the case fails as stalled, while the orifice with the same valve converges; with
-  // the default coupling it goes on coupled to the same answer as SIMPLEC's (one fixed point: within
-  // 1e-6, the solver tolerance). (A window of 3 went coupled in the start-up's first transient and
-  // diverged there: the window is for plateaus, not transients.)
-  TEST(PilotField, NozzleStallWindowIsTheNozzles)
-  {
-    ValveDescription v = laminar_valve();
-    const PilotFieldResult simplec = nozzle_at_null(v, 40e-6);
-    v.pilot.nozzle_stall_window = 20;
-    const PilotFieldResult coupled = nozzle_at_null(v, 40e-6);
-    std::printf("laminar nozzle at the null: C_dn %.7f, F %.6f N in %u iterations (default stall window) vs "
-                "C_dn %.7f, F %.6f N in %u (window 20)\n",
-                simplec.discharge_coefficient, simplec.flapper_force, simplec.iterations,
-                coupled.discharge_coefficient, coupled.flapper_force, coupled.iterations);
-    EXPECT_LT(test::relative(coupled.discharge_coefficient, simplec.discharge_coefficient), 1e-6);
-    EXPECT_LT(test::relative(coupled.flapper_force, simplec.flapper_force), 1e-6);
-    v.flow_solver.coupling = FlowSolverParameters::Coupling::simplec;
-    EXPECT_THROW(nozzle_at_null(v, 40e-6), NotConverged);
-    EXPECT_NO_THROW(orifice_laminar(v));
-  }
 
-  // A case that does not converge within the iteration limit becomes a flagged row (flag 2) that
-  // carries the reduced-order value, never a silent number; no-flow rows are exact limits (flag 3).
-  TEST(PilotFieldStage, UnconvergedCasesAreFlaggedRows)
-  {
-    ValveDescription v = test::valve({"Sweeps/Table temperatures=40, 120", "Sweeps/Drift temperatures=40, 120",
-                                      "Sweeps/Field orifice pressure fractions=0.5", "Sweeps/Field gap fractions=1",
-                                      "Sweeps/Field nozzle pressure fractions=0.5", "Flow solver/Maximum iterations=20",
-                                      "Output/Flow fields=none"});
-    const auto [orifice, nozzle] = compute_pilot_field_tables(v);
-    const PilotClosedForms closed_forms(v, 40);
-    ASSERT_EQ(orifice.rows.size(), 4u); // per temperature: dp = 0 and the case
-    EXPECT_EQ(orifice.rows[0].back(), flags::limit);
-    EXPECT_EQ(orifice.rows[1].back(), flags::not_converged);
-    const double dp = orifice.rows[1][1];
-    EXPECT_DOUBLE_EQ(orifice.rows[1][3], closed_forms.fixed_orifice(dp).discharge_coefficient);
-    std::size_t flagged = 0;
-    for (const auto &row : nozzle.rows)
-      {
-        EXPECT_TRUE(row.back() == flags::limit || row.back() == flags::not_converged);
-        for (double x : row)
-          EXPECT_TRUE(std::isfinite(x));
-        flagged += row.back() == flags::not_converged;
-      }
-    EXPECT_EQ(flagged, 2u);
-  }
 
-  // The stage's fixed orifice is one continuation path over temperature (pilot_field_stage.h): the
-  // colder temperature's first case starts from the hotter one's converged fields instead of from
-  // rest. Only the path changes: at 80 degC (k-epsilon, 1.03 MPa) C_d must be that of a case started
-  // from rest, within 3e-4 relative (each solve stops once its flow rate changes by less than 1e-4
-  // over 50 iterations, so two converged solves from different starts could differ by a few 1e-5;
-  // measured 2e-9), and the step from 90 degC must take less than half the iterations of the start
-  // from rest (measured 621 against 2 852).
-  TEST(PilotFieldStage, OrificePathOverTemperatureKeepsTheAnswer)
-  {
-    ValveDescription v = test::valve({"Sweeps/Table temperatures=40, 80, 90", "Sweeps/Drift temperatures=40, 80, 90",
-                                      "Sweeps/Field orifice pressure fractions=0.05", "Sweeps/Field gap fractions=1",
-                                      "Sweeps/Field nozzle pressure fractions=0.15", "Output/Flow fields=none"});
-    const auto [orifice, nozzle] = compute_pilot_field_tables(v);
-    ASSERT_EQ(orifice.rows.size(), 6u); // per temperature: dp = 0 and the case
-    const auto &row = orifice.rows[3];
-    ASSERT_EQ(row[0], 80);
-    ASSERT_EQ(row.back(), flags::computed);
-
-    PilotFieldCase c = pilot_field_case(v, 80);
-    c.turbulence = FlowSolverParameters::Turbulence::k_epsilon; // Re_0 above 1 000: the stage's choice too
-    PilotField from_rest(v, PilotGeometry::fixed_orifice, c);
-    const PilotFieldResult r = from_rest.solve(row[1]);
-
-    // the iterations of the stage's 80 degC case (flow/fixed_orifice_cases.csv)
-    std::ifstream summary(v.output.directory + "/flow/fixed_orifice_cases.csv");
-    std::string line;
-    std::vector<std::string> header;
-    unsigned int path_iterations = 0;
-    while (std::getline(summary, line))
-      {
-        if (line.empty() || line[0] == '#')
-          continue;
-        std::vector<std::string> cells;
-        std::stringstream split(line);
-        for (std::string cell; std::getline(split, cell, ',');)
-          cells.push_back(cell);
-        if (header.empty())
-          header = cells;
-        else if (std::stod(cells[0]) == 80)
-          for (std::size_t k = 0; k < header.size(); ++k)
-            if (header[k] == "iterations[1]")
-              path_iterations = unsigned(std::stoul(cells[k]));
-      }
-    std::printf("fixed orifice 80 degC, 1.03 MPa: C_d %.8f from 90 degC in %u iterations, %.8f from rest in %u\n",
-                row[3], path_iterations, r.discharge_coefficient, r.iterations);
-    EXPECT_NEAR(row[3] / r.discharge_coefficient, 1, 3e-4);
-    ASSERT_GT(path_iterations, 0u);
-    EXPECT_LT(2 * path_iterations, r.iterations);
-  }
 } // namespace servodrift::flow

@@ -1,0 +1,94 @@
+// The pilot stage's field sweep (flow/pilot_field_stage): unconverged cases become flagged rows, and
+// the fixed orifice's continuation path over temperature keeps the answer of a start from rest.
+#include "common/table.h"
+#include "flow/pilot_closed_forms.h"
+#include "flow/pilot_field.h"
+#include "flow/pilot_field_stage.h"
+#include "tests/support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace servodrift::flow
+{
+  // A case that does not converge within the iteration limit becomes a flagged row (flag 2) that
+  // carries the reduced-order value, never a silent number; no-flow rows are exact limits (flag 3).
+  TEST(PilotFieldStage, UnconvergedCasesAreFlaggedRows)
+  {
+    ValveDescription v = test::valve({"Sweeps/Table temperatures=40, 120", "Sweeps/Drift temperatures=40, 120",
+                                      "Sweeps/Field orifice pressure fractions=0.5", "Sweeps/Field gap fractions=1",
+                                      "Sweeps/Field nozzle pressure fractions=0.5", "Flow solver/Maximum iterations=20",
+                                      "Output/Flow fields=none"});
+    const auto [orifice, nozzle] = compute_pilot_field_tables(v);
+    const PilotClosedForms closed_forms(v, 40);
+    ASSERT_EQ(orifice.rows.size(), 4u); // per temperature: dp = 0 and the case
+    EXPECT_EQ(orifice.rows[0].back(), flags::limit);
+    EXPECT_EQ(orifice.rows[1].back(), flags::not_converged);
+    const double dp = orifice.rows[1][1];
+    EXPECT_DOUBLE_EQ(orifice.rows[1][3], closed_forms.fixed_orifice(dp).discharge_coefficient);
+    std::size_t flagged = 0;
+    for (const auto &row : nozzle.rows)
+      {
+        EXPECT_TRUE(row.back() == flags::limit || row.back() == flags::not_converged);
+        for (double x : row)
+          EXPECT_TRUE(std::isfinite(x));
+        flagged += row.back() == flags::not_converged;
+      }
+    EXPECT_EQ(flagged, 2u);
+  }
+
+  // The stage's fixed orifice is one continuation path over temperature (pilot_field_stage.h): the
+  // colder temperature's first case starts from the hotter one's converged fields instead of from
+  // rest. Only the path changes: at 80 degC (k-epsilon, 1.03 MPa) C_d must be that of a case started
+  // from rest, within 3e-4 relative (each solve stops once its flow rate changes by less than 1e-4
+  // over 50 iterations, so two converged solves from different starts could differ by a few 1e-5;
+  // measured 2e-9), and the step from 90 degC must take less than half the iterations of the start
+  // from rest (measured 621 against 2 852).
+  TEST(PilotFieldStage, OrificePathOverTemperatureKeepsTheAnswer)
+  {
+    ValveDescription v = test::valve({"Sweeps/Table temperatures=40, 80, 90", "Sweeps/Drift temperatures=40, 80, 90",
+                                      "Sweeps/Field orifice pressure fractions=0.05", "Sweeps/Field gap fractions=1",
+                                      "Sweeps/Field nozzle pressure fractions=0.15", "Output/Flow fields=none"});
+    const auto [orifice, nozzle] = compute_pilot_field_tables(v);
+    ASSERT_EQ(orifice.rows.size(), 6u); // per temperature: dp = 0 and the case
+    const auto &row = orifice.rows[3];
+    ASSERT_EQ(row[0], 80);
+    ASSERT_EQ(row.back(), flags::computed);
+
+    PilotFieldCase c = pilot_field_case(v, 80);
+    c.turbulence = FlowSolverParameters::Turbulence::k_epsilon; // Re_0 above 1 000: the stage's choice too
+    PilotField from_rest(v, PilotGeometry::fixed_orifice, c);
+    const PilotFieldResult r = from_rest.solve(row[1]);
+
+    // the iterations of the stage's 80 degC case (flow/fixed_orifice_cases.csv)
+    std::ifstream summary(v.output.directory + "/flow/fixed_orifice_cases.csv");
+    std::string line;
+    std::vector<std::string> header;
+    unsigned int path_iterations = 0;
+    while (std::getline(summary, line))
+      {
+        if (line.empty() || line[0] == '#')
+          continue;
+        std::vector<std::string> cells;
+        std::stringstream split(line);
+        for (std::string cell; std::getline(split, cell, ',');)
+          cells.push_back(cell);
+        if (header.empty())
+          header = cells;
+        else if (std::stod(cells[0]) == 80)
+          for (std::size_t k = 0; k < header.size(); ++k)
+            if (header[k] == "iterations[1]")
+              path_iterations = unsigned(std::stoul(cells[k]));
+      }
+    std::printf("fixed orifice 80 degC, 1.03 MPa: C_d %.8f from 90 degC in %u iterations, %.8f from rest in %u\n",
+                row[3], path_iterations, r.discharge_coefficient, r.iterations);
+    EXPECT_NEAR(row[3] / r.discharge_coefficient, 1, 3e-4);
+    ASSERT_GT(path_iterations, 0u);
+    EXPECT_LT(2 * path_iterations, r.iterations);
+  }
+} // namespace servodrift::flow
