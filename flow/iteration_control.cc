@@ -67,7 +67,7 @@ namespace servodrift::flow
         window_best = cycle_best = previous_cycle_best = none;
         switched = true;
         stalled = false;
-        stall_test_from = count;
+        stall_test_from = stall_window_from = count;
       }
     if (count >= settings.max_iterations || stalled)
       {
@@ -153,6 +153,16 @@ namespace servodrift::flow
           stop_acceleration(state);
         lowered = true;
         cycle_best = none; // judge the new setting afresh
+        if (stall_test_from > 0)
+          {
+            // coupled iterations judge stalls on the cycle window too: a window that the new setting
+            // has only partly run would be judged on the old one's hover (RV-1's nozzle at 100 degC,
+            // 20 um, 20.6 MPa stalled 100 iterations after a lowering, at continuity 2e-6 against
+            // 1e-6, and was retried). The new setting gets a whole window, judged against the last
+            // whole window before it
+            stall_window_from = count;
+            window_best = none;
+          }
       }
     previous_cycle_best = cycle_best;
     cycle_best = none;
@@ -164,10 +174,10 @@ namespace servodrift::flow
   {
     const unsigned int window =
       stall_test_from > 0 && settings.cycle_window > 0 ? settings.cycle_window : settings.stall_window;
-    if (window == 0)
+    if (window == 0 || count == stall_window_from) // the iteration of a lowering belongs to the old setting
       return false;
     window_best = std::min(window_best, largest);
-    if ((count - stall_test_from) % window != 0)
+    if ((count - stall_window_from) % window != 0)
       return false;
     const bool stalled = window_best > required_improvement * previous_window_best;
     previous_window_best = window_best;

@@ -13,8 +13,8 @@
 //     window's lowers the pressure relaxation by 0.7, to 0.3 at least (the fixed point does not
 //     depend on it; only the path does), and judges the new setting afresh;
 //   - stall test (`Stall window'): the same over the longer window; with `simplec-then-coupled'
-//     SIMPLEC's stall switches to coupled iterations (judged on the cycle window from there), else
-//     the run has not converged;
+//     SIMPLEC's stall switches to coupled iterations (judged on the cycle window from there, each
+//     lowered relaxation given a whole window of its own), else the run has not converged;
 //   - not converged: stalled, or the iteration limit.
 #include "common/parameters/flow_solver.h"
 #include "flow/anderson_acceleration.h"
@@ -118,6 +118,7 @@ namespace servodrift::flow
     // shorter cycle window
     double window_best, previous_window_best, cycle_best, previous_cycle_best;
     unsigned int stall_test_from = 0; ///< the iteration of the switch to coupled iterations (0: none)
+    unsigned int stall_window_from = 0; ///< where the stall test's windows are counted from
     std::unique_ptr<AndersonAcceleration> anderson;
     Eigen::VectorXd accelerated_start; ///< the state the last iteration started from
     double smallest_change;

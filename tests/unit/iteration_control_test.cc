@@ -214,6 +214,38 @@ TEST(IterationControl, StalledSimplecFailsOrGoesOnCoupled)
   EXPECT_EQ(coupled.iteration(), 200u);
 }
 
+TEST(IterationControl, CoupledStallTestGivesALoweredRelaxationAWholeWindow)
+{
+  // SIMPLEC flat at 1e-2 stalls at 200 (stall window 100); the coupled iterations fall to 1e-3 and
+  // hover: their first window (201-230) halves SIMPLEC's best, the cycle test lowers the relaxation
+  // at 240 (211-240 did not halve 201-210). The stall test's next window then runs 241-270 under the
+  // new setting alone, instead of 231-260 of which the old one ran 10 iterations
+  NoState state;
+  const auto s = settings(100, 30, FlowSolverParameters::Coupling::simplec_then_coupled);
+  auto hover_then_converge = [](unsigned int it) {
+    return all(it <= 200 ? 1e-2 : it <= 265 ? 1e-3 : 1e-3 * std::pow(0.5, it - 265.0));
+  };
+  IterationControl converging(s, 1e-6, nullptr, false);
+  unsigned int lowered_at = 0;
+  Verdict v = Verdict::go_on;
+  while (v == Verdict::go_on)
+    {
+      const unsigned int it = converging.next();
+      v = converging.judge(hover_then_converge(it), state);
+      if (converging.relaxation_lowered())
+        lowered_at = it;
+    }
+  EXPECT_EQ(lowered_at, 240u);
+  EXPECT_EQ(v, Verdict::converged); // judged at 260 with the old windows, it stalled there
+  EXPECT_EQ(converging.iteration(), 275u); // 1e-3 / 2^10 < 1e-6
+
+  // a hover that the lowered relaxation does not end still stalls, one whole window after it
+  IterationControl hovering(s, 1e-6, nullptr, false);
+  EXPECT_EQ(run(hovering, state, [](unsigned int it) { return all(it <= 200 ? 1e-2 : 1e-3); }), Verdict::not_converged);
+  EXPECT_EQ(hovering.iteration(), 270u);
+  EXPECT_NE(hovering.reason().find("stalled"), std::string::npos) << hovering.reason();
+}
+
 namespace
 {
   /// The outer iteration as a linear contraction x <- M x + b (eigenvalues spread over [0, 0.98]),
