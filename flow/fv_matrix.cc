@@ -81,8 +81,7 @@ namespace servodrift::flow
     neighbour_sum.assign(n, 0.0);
     mesh.gradient(phi, phi_b, grad);
     const bool second_order = convection == FlowSolverParameters::Convection::bounded_linear_upwind;
-    std::vector<double> psi;
-    if (second_order)
+    if (second_order && !(limiter_held && psi.size() == n))
       psi = barth_jespersen_limiter(mesh, phi, phi_b, grad);
 
     mesh.for_each_face(

@@ -51,6 +51,11 @@ namespace servodrift::flow
                                        const std::vector<double> &gamma, const std::vector<double> &flux,
                                        const BoundaryConditions &boundaries,
                                        FlowSolverParameters::Convection convection);
+    /// Holds the bounded scheme's limiter at the values of the last assembly (a frozen limiter, as
+    /// SU2's LIMITER_ITER and FUN3D's freeze_limiter_iteration): Barth-Jespersen's min is not
+    /// differentiable, and where it switches between faces from one iteration to the next the
+    /// residual hovers instead of converging (doc/method.md, "Cycles and stalls").
+    void hold_limiter(bool hold) { limiter_held = hold; }
     /// Under-relaxation by alpha (Patankar): the diagonal a_P/alpha into A and (1 - alpha)/alpha a_P
     /// phi into b. Returns sum |b - A phi| of the unrelaxed equation at the current phi, and in `scale'
     /// sum a_P |scale_field|, what that residual is relative to.
@@ -70,6 +75,8 @@ namespace servodrift::flow
   private:
     const FvMesh &mesh;
     std::vector<Vector2> grad;   ///< work: the gradient of the transported field
+    std::vector<double> psi;     ///< the limiter of the last assembly (bounded scheme)
+    bool limiter_held = false;
     struct IterativeSolvers;
     std::unique_ptr<IterativeSolvers> solvers;
   };

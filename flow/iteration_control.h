@@ -11,7 +11,8 @@
 //     starts again when a combination made the change grow tenfold, and stops above the start;
 //   - cycle test (`Cycle window'): a window whose best largest residual is not half the last
 //     window's lowers the pressure relaxation by 0.7, to 0.3 at least (the fixed point does not
-//     depend on it; only the path does), and judges the new setting afresh;
+//     depend on it; only the path does), and judges the new setting afresh; in coupled iterations
+//     the first such window within 10 tolerances also holds the convection limiters from there on;
 //   - stall test (`Stall window'): the same over the longer window; with `simplec-then-coupled'
 //     SIMPLEC's stall switches to coupled iterations (judged on the cycle window from there, each
 //     lowered relaxation given a whole window of its own), else the run has not converged;
@@ -79,9 +80,14 @@ namespace servodrift::flow
     double pressure_relaxation() const { return relaxation; }
     /// The coupled step's relaxation of its pressure update: the factor the cycles lowered alpha_p by.
     double coupled_pressure_relaxation() const { return relaxation / settings.pressure_relaxation; }
+    /// The convection limiters are to be held at their last values (MomentumEquation::hold_limiters):
+    /// from the first cycle caught in coupled iterations within limiter_hold_level tolerances to
+    /// the end of the solve.
+    bool limiters_held_now() const { return limiters_held; }
     /// Events of the last judge(), for the progress report.
     bool relaxation_lowered() const { return lowered; }
     bool switched_to_coupled() const { return switched; }
+    bool limiters_hold_started() const { return hold_started; }
     /// The residuals are due on the progress report this iteration (`Report interval').
     bool report_due() const { return settings.report_interval > 0 && count % settings.report_interval == 0; }
     /// Why the run diverged or did not converge (for the error message).
@@ -94,6 +100,9 @@ namespace servodrift::flow
     static constexpr double relaxation_reduction = 0.7;
     static constexpr double lowest_pressure_relaxation = 0.3;
     static constexpr double acceleration_restart_growth = 10;
+    /// A cycle caught in coupled iterations holds the limiters only if its window's best largest
+    /// residual is below this many tolerances.
+    static constexpr double limiter_hold_level = 10;
 
   private:
     bool monitors_settled();
@@ -111,7 +120,7 @@ namespace servodrift::flow
     unsigned int count = 0;
     double relaxation;
     bool coupled_iterations;
-    bool lowered = false, switched = false;
+    bool lowered = false, switched = false, limiters_held = false, hold_started = false;
     std::string why;
     std::vector<std::vector<double>> history; ///< the monitored quantities of the last window + 1 iterations
     // the stall test: the smallest largest-residual of this window and of the last; the same on the

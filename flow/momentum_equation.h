@@ -45,6 +45,12 @@ namespace servodrift::flow
     /// The under-relaxation alpha_u of the next assemblies (default: `Velocity relaxation').
     void set_relaxation(double alpha) { settings.velocity_relaxation = alpha; }
     double relaxation() const { return settings.velocity_relaxation; }
+    /// Holds both components' convection limiters (FvMatrix::hold_limiter) while `hold'.
+    void hold_limiters(bool hold)
+    {
+      for (FvMatrix &eq : equation)
+        eq.hold_limiter(hold);
+    }
     /// The relaxed equation of component 0 (x) or 1 (y, radial).
     const FvMatrix &component(int i) const { return equation[i]; }
     const std::vector<double> &D() const { return D_rhie_chow; }

@@ -59,6 +59,7 @@ namespace servodrift::flow
   {
     update_boundary_values();
     mesh.gradient(state.p, state.p_b, state.grad_p);
+    momentum.hold_limiters(control.limiters_held_now());
     const MomentumEquation::Residuals m = momentum.assemble(state, boundaries, *turbulence, cavitation.convecting_flux(state.flux),
                                                             previous.dt > 0 ? &update_time_term() : nullptr);
     double imbalance = 0, throughput = 0;
@@ -114,6 +115,8 @@ namespace servodrift::flow
       }
     if (control.relaxation_lowered())
       std::fprintf(stderr, "  iteration %u: a cycle; pressure relaxation lowered to %.3g\n", it, control.pressure_relaxation());
+    if (control.limiters_hold_started())
+      std::fprintf(stderr, "  iteration %u: coupled iterations hover; convection limiters held from here\n", it);
     if (control.switched_to_coupled())
       std::fprintf(stderr, "  iteration %u: SIMPLEC stalled; coupled iterations from here\n", it);
   }

@@ -246,6 +246,40 @@ TEST(IterationControl, CoupledStallTestGivesALoweredRelaxationAWholeWindow)
   EXPECT_NE(hovering.reason().find("stalled"), std::string::npos) << hovering.reason();
 }
 
+TEST(IterationControl, CoupledHoverNearTheToleranceHoldsTheLimiters)
+{
+  // coupled iterations hovering at 3e-6 (tolerance 1e-6, within the 10 tolerances): the first caught
+  // cycle (iteration 60, cycle window 30) holds the limiters, once, and lowers the relaxation
+  NoState state;
+  auto s = settings(0, 30, FlowSolverParameters::Coupling::coupled);
+  IterationControl near(s, 1e-6, nullptr, false);
+  unsigned int held_at = 0, starts = 0;
+  for (unsigned int i = 0; i < 200; ++i)
+    {
+      const unsigned int it = near.next();
+      ASSERT_EQ(near.judge(all(3e-6), state), Verdict::go_on);
+      if (near.limiters_hold_started())
+        held_at = it, ++starts;
+      if (it < 60)
+        EXPECT_FALSE(near.limiters_held_now()) << it;
+    }
+  EXPECT_EQ(held_at, 60u);
+  EXPECT_EQ(starts, 1u);
+  EXPECT_TRUE(near.limiters_held_now());
+  EXPECT_DOUBLE_EQ(near.pressure_relaxation(), IterationControl::lowest_pressure_relaxation); // 60, 120, 180
+
+  // the same hover far above the tolerance (1e-3): the relaxation falls, the limiters stay free
+  IterationControl far(s, 1e-6, nullptr, false);
+  EXPECT_EQ(run(far, state, [](unsigned int) { return all(1e-3); }, 200), Verdict::go_on);
+  EXPECT_FALSE(far.limiters_held_now());
+  EXPECT_DOUBLE_EQ(far.pressure_relaxation(), IterationControl::lowest_pressure_relaxation);
+
+  // SIMPLEC's cycles never hold them, however close to the tolerance
+  IterationControl simplec(settings(0, 30), 1e-6, nullptr, false);
+  EXPECT_EQ(run(simplec, state, [](unsigned int) { return all(3e-6); }, 200), Verdict::go_on);
+  EXPECT_FALSE(simplec.limiters_held_now());
+}
+
 namespace
 {
   /// The outer iteration as a linear contraction x <- M x + b (eigenvalues spread over [0, 0.98]),
