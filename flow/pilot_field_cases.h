@@ -75,6 +75,10 @@ namespace servodrift::flow
   double span(const ValveDescription &valve);
   /// Each fraction times `scale'.
   std::vector<double> scaled(const std::vector<double> &fractions, double scale);
+  /// The nozzle's gaps in the order the stage's chain takes them, from the null gap outwards: the
+  /// gap fraction nearest 1, the smaller ones downwards, then the larger ones upwards, each with the
+  /// index of the gap whose first case it starts from (-1: none).
+  std::vector<std::pair<std::size_t, int>> gap_order(const std::vector<double> &fractions);
   const char *model_name(Turbulence t);
   /// <output>/flow
   std::string flow_directory(const ValveDescription &valve);

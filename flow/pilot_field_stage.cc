@@ -33,6 +33,20 @@ namespace servodrift::flow
 {
   using namespace case_record;
 
+  std::vector<std::pair<std::size_t, int>> gap_order(const std::vector<double> &fractions)
+  {
+    std::size_t middle = 0;
+    for (std::size_t k = 0; k < fractions.size(); ++k)
+      if (std::abs(fractions[k] - 1) < std::abs(fractions[middle] - 1))
+        middle = k;
+    std::vector<std::pair<std::size_t, int>> order{{middle, -1}};
+    for (std::size_t k = middle; k-- > 0;)
+      order.emplace_back(k, int(k + 1));
+    for (std::size_t k = middle + 1; k < fractions.size(); ++k)
+      order.emplace_back(k, int(k - 1));
+    return order;
+  }
+
   namespace
   {
     /// The fixed orifice's first case (its lowest pressure difference) at every table temperature, as
@@ -134,22 +148,6 @@ namespace servodrift::flow
       for (std::size_t j = 1; j < dps.size(); ++j)
         records.push_back(chain.solve(0, dps[j]));
       return records;
-    }
-
-    /// The nozzle's gaps from the null gap outwards: x0, the smaller ones downwards, then the larger
-    /// ones upwards, each with the index of the gap it starts from (-1: none).
-    std::vector<std::pair<std::size_t, int>> gap_order(const std::vector<double> &fractions)
-    {
-      std::size_t middle = 0;
-      for (std::size_t k = 0; k < fractions.size(); ++k)
-        if (std::abs(fractions[k] - 1) < std::abs(fractions[middle] - 1))
-          middle = k;
-      std::vector<std::pair<std::size_t, int>> order{{middle, -1}};
-      for (std::size_t k = middle; k-- > 0;)
-        order.emplace_back(k, int(k + 1));
-      for (std::size_t k = middle + 1; k < fractions.size(); ++k)
-        order.emplace_back(k, int(k - 1));
-      return order;
     }
 
     CaseRows nozzle_chain(const ValveDescription &valve, double T)
