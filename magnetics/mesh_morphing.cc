@@ -84,9 +84,7 @@ namespace servodrift::magnetics
         morph_cholesky.compute(K_ff);
         check(morph_cholesky, "the mesh-morphing factorisation");
       }
-    for (auto &v : velocity)
-      v.reinit(n);
-    move_to(0.0);
+    move_to(0.0); // sizes the virtual velocity too
   }
 
   std::array<double, 2> MagnetostaticProblem::Implementation::body_displacement(const Point<2> &x, double position) const
