@@ -104,13 +104,21 @@ namespace servodrift::flow
     const double epsilon_level = std::max(epsilon_inflow, level_fraction * *std::max_element(epsilon.begin(), epsilon.end()));
     std::vector<double> level(n);
 
-    // k: the dissipation rho e (+ D) as an implicit sink rho e/k k
+    // k: the dissipation rho e (+ D) as an implicit sink rho e/k k. D is linearised at the k of the
+    // cell, but in a hole (a cell whose k has fallen below hole_fraction of its neighbours' mean: the
+    // bounded linear upwind correction took it below the floor) at that mean: D = 2 mu |grad sqrt k|^2
+    // stays finite as the hole's k goes to 0, so D/k would grow without bound and hold the hole there,
+    // a state the equations (D itself as the sink) do not have. A solution without holes is unchanged.
     diffusivity(sigma_k);
     k_equation.assemble_convection_diffusion(k, k_b, gamma, convecting_flux, boundaries, settings.convection);
+    const std::vector<double> k_around = std::any_of(k_sink.begin(), k_sink.end(), [](double D) { return D > 0; })
+                                           ? neighbour_mean(k)
+                                           : std::vector<double>(n, 0.0);
     for (std::size_t c = 0; c < n; ++c)
       {
         const double V = mesh.cell_volume[c], kc = std::max(k[c], k_floor);
-        k_equation.diagonal[c] += (rho * dissipation[c] + k_sink[c]) / kc * V;
+        const double k_sink_linearised_at = kc < hole_fraction * k_around[c] ? k_around[c] : kc;
+        k_equation.diagonal[c] += (rho * dissipation[c] / kc + k_sink[c] / k_sink_linearised_at) * V;
         k_equation.b[c] += production[c] * V;
       }
     if (time)
@@ -119,8 +127,17 @@ namespace servodrift::flow
       level[c] = std::max(k[c], k_level);
     r.k = k_equation.relax(k, alpha, level, scale);
     r.k /= std::max(scale, vanishing);
-    const bool rate_from_linearised_k = epsilon_rate_from_linearised_k();
-    const std::vector<double> k_linearised = rate_from_linearised_k ? k : std::vector<double>{};
+    // the state the k equation is linearised at (the iteration's start): a variant that takes the
+    // epsilon equation's terms from it keeps its k and the production of its own mu_t there
+    const double mu_t_limit = viscosity_ratio_limit * mu;
+    const bool from_linearised_state = epsilon_terms_from_linearised_state();
+    const std::vector<double> k_linearised = from_linearised_state ? k : std::vector<double>{};
+    std::vector<double> epsilon_production = production;
+    if (from_linearised_state)
+      for (std::size_t c = 0; c < n; ++c)
+        epsilon_production[c] = k[c] > 0 && epsilon[c] > 0
+                                  ? std::min(model_viscosity(c, strain[c]), mu_t_limit) * 2 * strain[c] * strain[c]
+                                  : 0;
     k_equation.solve(k, settings, settings.turbulence_solver, "k");
 
     // epsilon: C1 e/k P [+ E] as the source, C2 [f_2] rho e^2/k as an implicit sink
@@ -130,10 +147,10 @@ namespace servodrift::flow
     for (std::size_t c = 0; c < n; ++c)
       {
         const double V = mesh.cell_volume[c];
-        const double kc = std::max(rate_from_linearised_k ? k_linearised[c] : k[c], k_floor);
+        const double kc = std::max(from_linearised_state ? k_linearised[c] : k[c], k_floor);
         const double ratio = std::max(epsilon[c], 0.0) / kc;
         epsilon_equation.diagonal[c] += C2 * destruction_factor[c] * rho * ratio * V;
-        epsilon_equation.b[c] += (C1 * ratio * production[c] + epsilon_source[c]) * V;
+        epsilon_equation.b[c] += (C1 * ratio * epsilon_production[c] + epsilon_source[c]) * V;
       }
     if (time)
       add_time_term(epsilon_equation, *time, 1);
@@ -145,7 +162,6 @@ namespace servodrift::flow
     epsilon_equation.solve(epsilon, settings, settings.turbulence_solver, "epsilon");
 
     // bounded, then the turbulent viscosity (relaxed, at most the limit)
-    const double mu_t_limit = viscosity_ratio_limit * mu;
     cells_at_limit = 0;
     for (std::size_t c = 0; c < n; ++c)
       {
@@ -157,6 +173,18 @@ namespace servodrift::flow
       }
     update_face_viscosity();
     return r;
+  }
+
+  std::vector<double> KEpsilonModel::neighbour_mean(const std::vector<double> &phi) const
+  {
+    std::vector<double> sum(phi.size(), 0.0), count(phi.size(), 0.0);
+    mesh.for_each_interior_face([&](std::size_t, unsigned int P, unsigned int N) {
+      sum[P] += phi[N], count[P] += 1;
+      sum[N] += phi[P], count[N] += 1;
+    });
+    for (std::size_t c = 0; c < phi.size(); ++c)
+      sum[c] /= std::max(count[c], 1.0);
+    return sum;
   }
 
   double KEpsilonModel::realizable_time_scale(double time_scale, double strain) const

@@ -5,6 +5,7 @@ foreach(name PilotFieldStage.OrificePathOverTemperatureKeepsTheAnswer Calibratio
              PilotField.CaughtCyclesLeaveTheAnswerUnchanged PilotField.GridSequencingKeepsTheFineMeshAnswer
              PilotFieldStage.StalledLaminarCaseIsReportedByItsTimeAverage
              PilotFieldChain.SSTOrificeGoesOnFromKEpsilonWhereItDivergesAlone
+             PilotFieldChain.LaunderSharmaHotNozzleConvergesFromRest
              TurbulenceValidation/BackwardFacingStep.ReattachmentLength/TwoLayer
              TurbulenceValidation/BackwardFacingStep.ReattachmentLength/SST
              TurbulenceValidation/BackwardFacingStep.ReattachmentLength/LaunderSharma

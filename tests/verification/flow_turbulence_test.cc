@@ -31,7 +31,10 @@ namespace servodrift::flow
   // Menter 1994); hence 10 %. The pipe is 60 D long, where the flow is developed (from 30 to 60 D the
   // two-layer model's f still changes by 4 %), with 80 cells across the radius, the first at y+ 0.7:
   // SST needs y+ below 1 (at y+ 1.8 its f falls by 5 %, at 0.4 it is -0.8 % of Blasius). Launder-
-  // Sharma converges there since it has Durbin's bound (without it, it stalled).
+  // Sharma converges there since it has Durbin's bound (without it, it stalled), and since its D is
+  // linearised at the neighbours' k in a hole (a cell below 1e-5 of their mean; k_epsilon.h's
+  // hole_fraction): with the e~ production of the linearised state but without that, it stalled at an
+  // e~ residual of 2e-3, holes of k 1e-12 m^2/s^2 near the wall between cells of 1e-6 and 2e-4.
   struct PipeCase
   {
     FlowSolverParameters::Turbulence model;
