@@ -95,6 +95,7 @@ int main(int argc, char **argv)
     {"Launder-Sharma 40 um at 100 degC, 20.6 MPa", nozzle, Turbulence::k_epsilon_launder_sharma, 1, 40e-6, 20.6e6, true, 0.6, 100},
     {"Launder-Sharma 60 um at 100 degC, 10.3 MPa", nozzle, Turbulence::k_epsilon_launder_sharma, 1, 60e-6, 10.3e6, true, 0.6, 100},
     {"Launder-Sharma 70 um at 90 degC, 10.3 MPa", nozzle, Turbulence::k_epsilon_launder_sharma, 1, 70e-6, 10.3e6, true, 0.6, 90},
+    {"Launder-Sharma 60 um at 100 degC, 10.3 MPa, single phase", nozzle, Turbulence::k_epsilon_launder_sharma, 1, 60e-6, 10.3e6, false, 0.6, 100},
   };
   std::set<std::size_t> chosen;
   std::vector<std::string> settings{"Output/Progress=none", "Output/Flow fields=none"};

@@ -14,11 +14,12 @@ namespace servodrift::flow
   } // namespace
 
   IterationControl::IterationControl(const FlowSolverParameters &settings_, double tolerance_,
-                                     const ConvergenceMonitor *monitor_, bool turbulent_)
+                                     const ConvergenceMonitor *monitor_, bool turbulent_, bool resume_simplec_)
     : settings(settings_)
     , tolerance(tolerance_)
     , monitor(monitor_ && monitor_->quantities ? monitor_ : nullptr)
     , turbulent(turbulent_)
+    , resume_simplec(resume_simplec_)
     , relaxation(settings_.pressure_relaxation)
     , coupled_iterations(settings_.coupling == FlowSolverParameters::Coupling::coupled)
     , window_best(none)
@@ -35,7 +36,7 @@ namespace servodrift::flow
 
   IterationControl::Verdict IterationControl::judge(const Residuals &r, AcceleratedState &state)
   {
-    lowered = switched = hold_started = false;
+    lowered = switched = switched_back = hold_started = false;
     const bool bad = !std::isfinite(r.u) || !std::isfinite(r.v) || !std::isfinite(r.continuity) ||
                      !std::isfinite(r.k) || !std::isfinite(r.epsilon) ||
                      (count > divergence_grace && (r.u > divergence_threshold || r.continuity > divergence_threshold));
@@ -54,7 +55,24 @@ namespace servodrift::flow
       accelerate(largest, state);
     cycle_test(largest, state);
     bool stalled = stall_test(largest);
-    if (stalled && !coupled_iterations && settings.coupling == FlowSolverParameters::Coupling::simplec_then_coupled)
+    if (stalled && resume_simplec && coupled_iterations && stall_test_from > 0 && simplec_again_from == 0)
+      {
+        // the coupled iterations have not resolved SIMPLEC's stall either: SIMPLEC goes on from their
+        // state, judged on a longer window. What SIMPLEC's window took for a stall can be a slow
+        // convergence with plateaus (Launder-Sharma's 60 um gap at 100 degC: SIMPLEC alone converges
+        // in 3 907 iterations, its residual flat for 500 of them, while the coupled iterations hover
+        // at continuity 2e-4)
+        coupled_iterations = false;
+        limiters_held = false;
+        if (anderson)
+          stop_acceleration(state);
+        window_best = previous_window_best = cycle_best = previous_cycle_best = none;
+        switched_back = true;
+        stalled = false;
+        simplec_again_from = stall_window_from = count;
+      }
+    if (stalled && !coupled_iterations && simplec_again_from == 0 &&
+        settings.coupling == FlowSolverParameters::Coupling::simplec_then_coupled)
       {
         // SIMPLEC is caught in a cycle of its segregation: go on coupled from here, with the
         // pressure relaxation the setting's again. The stall test goes on against SIMPLEC's last
@@ -76,6 +94,8 @@ namespace servodrift::flow
               (settled ? "" : "; monitored quantities still changing") +
               (stall_test_from > 0 ? "; coupled iterations since SIMPLEC stalled at iteration " + std::to_string(stall_test_from) :
                                      "") +
+              (simplec_again_from > 0 ? ", SIMPLEC again since they stalled at iteration " + std::to_string(simplec_again_from) :
+                                        "") +
               ")";
         return Verdict::not_converged;
       }
@@ -180,11 +200,13 @@ namespace servodrift::flow
   }
 
   /// After a switch from SIMPLEC the coupled iterations are judged on the cycle window: they have no
-  /// segregation cycle to wait out.
+  /// segregation cycle to wait out. SIMPLEC after them is judged on resumed_stall_window_factor stall
+  /// windows, its first one free.
   bool IterationControl::stall_test(double largest)
   {
-    const unsigned int window =
-      stall_test_from > 0 && settings.cycle_window > 0 ? settings.cycle_window : settings.stall_window;
+    const unsigned int window = simplec_again_from > 0                           ? resumed_stall_window_factor * settings.stall_window
+                                : stall_test_from > 0 && settings.cycle_window > 0 ? settings.cycle_window
+                                                                                    : settings.stall_window;
     if (window == 0 || count == stall_window_from) // the iteration of a lowering belongs to the old setting
       return false;
     window_best = std::min(window_best, largest);

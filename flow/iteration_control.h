@@ -15,7 +15,9 @@
 //     the first such window within 10 tolerances also holds the convection limiters from there on;
 //   - stall test (`Stall window'): the same over the longer window; with `simplec-then-coupled'
 //     SIMPLEC's stall switches to coupled iterations (judged on the cycle window from there, each
-//     lowered relaxation given a whole window of its own), else the run has not converged;
+//     lowered relaxation given a whole window of its own), else the run has not converged; coupled
+//     iterations that stall in turn hand back to SIMPLEC (if `resume_simplec'), once, judged on a
+//     window 4 times the stall window from there;
 //   - not converged: stalled, or the iteration limit.
 #include "common/parameters/flow_solver.h"
 #include "flow/anderson_acceleration.h"
@@ -64,9 +66,12 @@ namespace servodrift::flow
       not_converged
     };
 
-    /// `monitor' may be null (no monitored quantities); `turbulent': the messages name k and epsilon.
+    /// `monitor' may be null (no monitored quantities); `turbulent': the messages name k and epsilon;
+    /// `resume_simplec': stalled coupled iterations hand back to SIMPLEC (a case's answer), or fail
+    /// (a start for another solve: an intermediate pressure level, a check, whose callers go on from
+    /// where it stopped).
     IterationControl(const FlowSolverParameters &settings, double tolerance, const ConvergenceMonitor *monitor,
-                     bool turbulent);
+                     bool turbulent, bool resume_simplec = true);
     ~IterationControl();
 
     /// Starts the next iteration; its number (from 1).
@@ -87,6 +92,7 @@ namespace servodrift::flow
     /// Events of the last judge(), for the progress report.
     bool relaxation_lowered() const { return lowered; }
     bool switched_to_coupled() const { return switched; }
+    bool switched_back_to_simplec() const { return switched_back; }
     bool limiters_hold_started() const { return hold_started; }
     /// The residuals are due on the progress report this iteration (`Report interval').
     bool report_due() const { return settings.report_interval > 0 && count % settings.report_interval == 0; }
@@ -103,6 +109,9 @@ namespace servodrift::flow
     /// A cycle caught in coupled iterations holds the limiters only if its window's best largest
     /// residual is below this many tolerances.
     static constexpr double limiter_hold_level = 10;
+    /// SIMPLEC after stalled coupled iterations is judged on this many stall windows (a nozzle's
+    /// 1 000 iterations: Launder-Sharma's 60 um gap at 100 degC plateaus for 500).
+    static constexpr unsigned int resumed_stall_window_factor = 4;
 
   private:
     bool monitors_settled();
@@ -116,17 +125,19 @@ namespace servodrift::flow
     double tolerance;
     const ConvergenceMonitor *monitor;
     bool turbulent;
+    bool resume_simplec;
 
     unsigned int count = 0;
     double relaxation;
     bool coupled_iterations;
-    bool lowered = false, switched = false, limiters_held = false, hold_started = false;
+    bool lowered = false, switched = false, switched_back = false, limiters_held = false, hold_started = false;
     std::string why;
     std::vector<std::vector<double>> history; ///< the monitored quantities of the last window + 1 iterations
     // the stall test: the smallest largest-residual of this window and of the last; the same on the
     // shorter cycle window
     double window_best, previous_window_best, cycle_best, previous_cycle_best;
     unsigned int stall_test_from = 0; ///< the iteration of the switch to coupled iterations (0: none)
+    unsigned int simplec_again_from = 0; ///< the iteration of the switch back to SIMPLEC (0: none)
     unsigned int stall_window_from = 0; ///< where the stall test's windows are counted from
     std::unique_ptr<AndersonAcceleration> anderson;
     Eigen::VectorXd accelerated_start; ///< the state the last iteration started from

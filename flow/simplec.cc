@@ -119,6 +119,8 @@ namespace servodrift::flow
       std::fprintf(stderr, "  iteration %u: coupled iterations hover; convection limiters held from here\n", it);
     if (control.switched_to_coupled())
       std::fprintf(stderr, "  iteration %u: SIMPLEC stalled; coupled iterations from here\n", it);
+    if (control.switched_back_to_simplec())
+      std::fprintf(stderr, "  iteration %u: coupled iterations stalled too; SIMPLEC again from here\n", it);
   }
 
   // ---- public interface ----------------------------------------------------------------------
@@ -138,7 +140,11 @@ namespace servodrift::flow
   {
     auto &d = *impl;
     d.forget_time_levels();
-    IterationControl control(d.settings, tolerance, consult_monitor ? &d.monitor : nullptr, d.turbulence->turbulent());
+    // only the solve of an answer goes back to SIMPLEC after stalled coupled iterations: a start
+    // state's callers go on from where it stopped, and a longer solve there moved RV-1's laminar null
+    // to another cavitating state (0.15 % in C_dn) when its path switched early
+    IterationControl control(d.settings, tolerance, consult_monitor ? &d.monitor : nullptr, d.turbulence->turbulent(),
+                             consult_monitor);
     Residuals r;
     for (bool converged = false; !converged;)
       {

@@ -24,9 +24,9 @@ namespace servodrift
                       Patterns::Selection("simplec|coupled|simplec-then-coupled"),
                       "simplec: segregated (momentum, then the pressure correction; the paper's choice). "
                       "coupled: u, v and p as one linear system per outer iteration (UMFPACK LU): the same "
-                      "converged fields in fewer, much costlier iterations. simplec-then-coupled: SIMPLEC, and "
-                      "coupled iterations from where it stalls (`Stall window'), judged on the `Cycle window' "
-                      "(doc/method.md). [-]");
+                      "converged fields in fewer, much costlier iterations. simplec-then-coupled: SIMPLEC, "
+                      "coupled iterations from where it stalls (`Stall window', then judged on the `Cycle "
+                      "window'), SIMPLEC again if they stall too (doc/method.md). [-]");
     prm.declare_entry("Momentum solver", "bicgstab-jacobi",
                       Patterns::Selection("bicgstab-jacobi|bicgstab-gauss-seidel|bicgstab-ilu|direct"),
                       "Linear solver of the momentum equations: BiCGSTAB (Eigen) preconditioned by Jacobi, a "
@@ -52,7 +52,8 @@ namespace servodrift
                       "A run whose largest scaled residual has not fallen by half from one window of this "
                       "many iterations to the next has stalled (a cycle, not a slow convergence) and fails "
                       "then, without waiting for the iteration limit, or with `Pressure-velocity coupling' "
-                      "simplec-then-coupled goes on with coupled iterations. 0: never. [1]");
+                      "simplec-then-coupled goes on with coupled iterations (and, if they stall, with SIMPLEC "
+                      "judged on 4 such windows). 0: never. [1]");
     prm.declare_entry("Cycle window", "200", Patterns::Integer(0, 10000000),
                       "A run whose largest scaled residual has not fallen by half from one window of this "
                       "many iterations to the next is caught in a cycle (cells at a cavity's edge switching "

@@ -180,22 +180,33 @@ TEST(IterationControl, StalledSimplecFailsOrGoesOnCoupled)
   IterationControl switching(settings(100, 30, FlowSolverParameters::Coupling::simplec_then_coupled), 1e-6, nullptr,
                              false);
   EXPECT_FALSE(switching.coupled());
-  unsigned int switched_at = 0;
+  unsigned int switched_at = 0, back_at = 0;
+  bool coupled_at_switch = false;
+  double relaxation_at_switch = 0;
   Verdict v = Verdict::go_on;
   while (v == Verdict::go_on)
     {
       const unsigned int it = switching.next();
       v = switching.judge(all(1e-2), state);
       if (switching.switched_to_coupled())
-        switched_at = it;
+        switched_at = it, coupled_at_switch = switching.coupled(), relaxation_at_switch = switching.pressure_relaxation();
+      if (switching.switched_back_to_simplec())
+        back_at = it;
     }
   EXPECT_EQ(switched_at, 200u);
-  EXPECT_TRUE(switching.coupled());
-  EXPECT_DOUBLE_EQ(switching.pressure_relaxation(), 0.7);
-  // the coupled iterations do not halve SIMPLEC's plateau within their first cycle window
+  EXPECT_TRUE(coupled_at_switch);
+  EXPECT_DOUBLE_EQ(relaxation_at_switch, 0.7);
+  // the coupled iterations do not halve SIMPLEC's plateau within their first cycle window: SIMPLEC
+  // again, once, judged on 4 stall windows (400) with the first one free. The cycle test lowers the
+  // relaxation at 270, 330 and 390 (to its floor; a lowering judges the next cycle window afresh),
+  // each lowering a new window's start: 391-790 free, 791-1190 not halving it
+  EXPECT_EQ(back_at, 230u);
+  EXPECT_FALSE(switching.coupled());
   EXPECT_EQ(v, Verdict::not_converged);
-  EXPECT_EQ(switching.iteration(), 230u);
-  EXPECT_NE(switching.reason().find("coupled iterations since SIMPLEC stalled at iteration 200"), std::string::npos)
+  EXPECT_EQ(switching.iteration(), 1190u);
+  EXPECT_NE(switching.reason().find("coupled iterations since SIMPLEC stalled at iteration 200, SIMPLEC again since "
+                                    "they stalled at iteration 230"),
+            std::string::npos)
     << switching.reason();
 
   // coupled iterations that converge after the switch
@@ -206,6 +217,23 @@ TEST(IterationControl, StalledSimplecFailsOrGoesOnCoupled)
             Verdict::converged);
   EXPECT_TRUE(resolving.coupled());
   EXPECT_EQ(resolving.iteration(), 214u); // 1e-2 / 2^14 < 1e-6
+
+  // a start state's solve (resume_simplec false: an intermediate level, a check) fails there instead
+  IterationControl start_state(settings(100, 30, FlowSolverParameters::Coupling::simplec_then_coupled), 1e-6, nullptr,
+                               false, false);
+  EXPECT_EQ(run(start_state, state, [](unsigned int) { return all(1e-2); }), Verdict::not_converged);
+  EXPECT_TRUE(start_state.coupled());
+  EXPECT_EQ(start_state.iteration(), 230u);
+  EXPECT_NE(start_state.reason().find("coupled iterations since SIMPLEC stalled at iteration 200)"), std::string::npos)
+    << start_state.reason();
+
+  // and SIMPLEC's slow convergence from there converges: flat to 500, then a tenth every 400
+  // iterations (each 400-window halving the last, not each 100-window)
+  IterationControl slow(settings(100, 30, FlowSolverParameters::Coupling::simplec_then_coupled), 1e-6, nullptr, false);
+  EXPECT_EQ(run(slow, state, [](unsigned int it) { return all(it <= 500 ? 2e-2 : 2e-2 * std::pow(0.1, (it - 500.0) / 400)); }),
+            Verdict::converged);
+  EXPECT_FALSE(slow.coupled());
+  EXPECT_EQ(slow.iteration(), 2221u); // 2e-2 * 0.1^(1721/400) < 1e-6
 
   // `coupled' from the start never switches
   IterationControl coupled(settings(100, 30, FlowSolverParameters::Coupling::coupled), 1e-6, nullptr, false);
@@ -239,10 +267,22 @@ TEST(IterationControl, CoupledStallTestGivesALoweredRelaxationAWholeWindow)
   EXPECT_EQ(v, Verdict::converged); // judged at 260 with the old windows, it stalled there
   EXPECT_EQ(converging.iteration(), 275u); // 1e-3 / 2^10 < 1e-6
 
-  // a hover that the lowered relaxation does not end still stalls, one whole window after it
+  // a hover that the lowered relaxation does not end still stalls the coupled iterations, one whole
+  // window after it (270); SIMPLEC again from there lowers the relaxation at 330 and 390 (0.49 since
+  // 240) and stalls at 1190, 391-790 free and 791-1190 not halving it
   IterationControl hovering(s, 1e-6, nullptr, false);
-  EXPECT_EQ(run(hovering, state, [](unsigned int it) { return all(it <= 200 ? 1e-2 : 1e-3); }), Verdict::not_converged);
-  EXPECT_EQ(hovering.iteration(), 270u);
+  unsigned int back_at = 0;
+  v = Verdict::go_on;
+  while (v == Verdict::go_on)
+    {
+      const unsigned int it = hovering.next();
+      v = hovering.judge(all(it <= 200 ? 1e-2 : 1e-3), state);
+      if (hovering.switched_back_to_simplec())
+        back_at = it;
+    }
+  EXPECT_EQ(back_at, 270u);
+  EXPECT_EQ(v, Verdict::not_converged);
+  EXPECT_EQ(hovering.iteration(), 1190u);
   EXPECT_NE(hovering.reason().find("stalled"), std::string::npos) << hovering.reason();
 }
 

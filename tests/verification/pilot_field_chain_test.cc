@@ -69,7 +69,12 @@ namespace servodrift::flow
   // - 70 um at 90 degC. Before the production of e~ took the model's mu_t of that linearised state,
   //   it took the relaxed mu_t, which lags the model's: the case stalled, and in Launder-Sharma's
   //   sweep its march was flagged 2 (520 of 1 000 averaged steps at the cap).
-  // (KEpsilonLaunderSharma::epsilon_terms_from_linearised_state; doc/changes.md.) Now converged rows.
+  // (KEpsilonLaunderSharma::epsilon_terms_from_linearised_state; doc/changes.md.)
+  // - 60 um at 100 degC. SIMPLEC's residual plateaus for about 500 iterations, which the nozzle's
+  //   stall window took for a stall; the coupled iterations it switched to hovered at continuity
+  //   2e-4 and the case was flagged 2 in the sweep. Now SIMPLEC takes over again after them
+  //   (IterationControl) and converges it.
+  // Now converged rows.
   // C_d within 5 % of the two-layer k-epsilon's at the same case: the tolerance every credible model
   // holds against the orifice experiments (doc/validation.md); at this pressure the cavity in the gap
   // leaves C_d little to the model (-1.5 % measured at 50 um). The force is not compared: it is where
@@ -82,7 +87,7 @@ namespace servodrift::flow
     launder_sharma.push_back("Pilot stage/Nozzle flow model=k-epsilon-launder-sharma");
     k_epsilon.push_back("Pilot stage/Nozzle flow model=k-epsilon");
     const double dp = 10.3e6;
-    for (const auto &[T, h] : {std::pair{110.0, 50e-6}, std::pair{90.0, 70e-6}})
+    for (const auto &[T, h] : {std::pair{110.0, 50e-6}, std::pair{90.0, 70e-6}, std::pair{100.0, 60e-6}})
       {
         const std::vector<double> reference =
           Chain(test::valve(k_epsilon), PilotGeometry::nozzle_flapper, T).solve(h, dp);

@@ -138,11 +138,15 @@ namespace servodrift::flow
   // Flow solver's. A window of 20 calls the nozzle's SIMPLEC stalled within a few windows: with
   // SIMPLEC alone the case fails as stalled, while the orifice with the same valve converges; with
   // the default coupling it goes on coupled to the same answer as SIMPLEC's (one fixed point: within
-  // 1e-6, the solver tolerance). (A window of 3 went coupled in the start-up's first transient and
-  // diverged there: the window is for plateaus, not transients.)
+  // 1e-6, the solver tolerance). Single phase: the cavitating null has more than one steady state of
+  // the equilibrium model (which cells cavitate), and the window-20 path reached another one, C_dn
+  // 0.15 % and F 1.3e-4 from the default's (2026-11-28, on this test's first machine it had not).
+  // (A window of 3 went coupled in the start-up's first transient and diverged there: the window is
+  // for plateaus, not transients.)
   TEST(PilotField, NozzleStallWindowIsTheNozzles)
   {
     ValveDescription v = test::valve();
+    v.pilot.field_cavitation = false;
     const PilotFieldResult simplec = nozzle_at_null(v, 40e-6);
     v.pilot.nozzle_stall_window = 20;
     const PilotFieldResult coupled = nozzle_at_null(v, 40e-6);
