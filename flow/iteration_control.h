@@ -67,9 +67,8 @@ namespace servodrift::flow
     };
 
     /// `monitor' may be null (no monitored quantities); `turbulent': the messages name k and epsilon;
-    /// `resume_simplec': stalled coupled iterations hand back to SIMPLEC (a case's answer), or fail
-    /// (a start for another solve: an intermediate pressure level, a check, whose callers go on from
-    /// where it stopped).
+    /// `resume_simplec': stalled coupled iterations hand back to SIMPLEC, or fail the run (the
+    /// solver's solve_to() of a start state: an intermediate pressure level, the liquid check).
     IterationControl(const FlowSolverParameters &settings, double tolerance, const ConvergenceMonitor *monitor,
                      bool turbulent, bool resume_simplec = true);
     ~IterationControl();

@@ -140,9 +140,9 @@ namespace servodrift::flow
   {
     auto &d = *impl;
     d.forget_time_levels();
-    // only the solve of an answer goes back to SIMPLEC after stalled coupled iterations: a start
-    // state's callers go on from where it stopped, and a longer solve there moved RV-1's laminar null
-    // to another cavitating state (0.15 % in C_dn) when its path switched early
+    // solve() goes back to SIMPLEC after stalled coupled iterations; solve_to() for a start state
+    // (an intermediate pressure level, the liquid check) fails there as before: the flow stage was
+    // measured unchanged with them so (doc/changes.md, eighteenth look), not measured otherwise
     IterationControl control(d.settings, tolerance, consult_monitor ? &d.monitor : nullptr, d.turbulence->turbulent(),
                              consult_monitor);
     Residuals r;
