@@ -6,7 +6,7 @@
 namespace servodrift::flow
 {
   std::vector<double> cell_mass_imbalance(const FvMesh &mesh, const std::vector<double> &flux,
-                                          const CavitationModel &cavitation)
+                                          const CavitationModel &cavitation, const TimeLevel *time, double density)
   {
     std::vector<double> imbalance(mesh.n_cells(), 0.0);
     mesh.for_each_face(
@@ -16,6 +16,10 @@ namespace servodrift::flow
         imbalance[N] -= mF;
       },
       [&](std::size_t f, unsigned int P) { imbalance[P] += cavitation.face_mixture_ratio(f, flux[f]) * flux[f]; });
+    if (time && time->dt > 0 && cavitation.enabled())
+      for (std::size_t c = 0; c < mesh.n_cells(); ++c)
+        if (!cavitation.cell_cavitates(c))
+          imbalance[c] += density * mesh.cell_volume[c] / time->dt * (time->new_weight() - time->old_mass(c));
     return imbalance;
   }
 

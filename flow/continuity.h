@@ -9,9 +9,13 @@
 namespace servodrift::flow
 {
   /// Net mass flux out of each cell, sum over its faces of m F (m the upwind mixture density ratio
-  /// where cells cavitate, 1 otherwise) [kg/s per radian].
+  /// where cells cavitate, 1 otherwise) [kg/s per radian]; in a time step (`time', liquid density
+  /// `density') a liquid cell's imbalance adds its mass's rate of change, rho V (new_weight -
+  /// old_mass)/dt: nonzero where vapour the old levels held has collapsed, which the inflow must
+  /// fill (a cavitating cell's mass is its liquid fraction's balance, CavitationModel).
   std::vector<double> cell_mass_imbalance(const FvMesh &mesh, const std::vector<double> &flux,
-                                          const CavitationModel &cavitation);
+                                          const CavitationModel &cavitation, const TimeLevel *time = nullptr,
+                                          double density = 0);
   /// sum |imbalance| over the cells whose continuity holds: the liquid cells (a cavitating cell's
   /// liquid fraction balances its mass instead).
   double liquid_imbalance_sum(const std::vector<double> &imbalance, const CavitationModel &cavitation);

@@ -79,7 +79,8 @@ namespace servodrift::flow
   PressureEquation::~PressureEquation() = default;
 
   double PressureEquation::correct(std::vector<double> &F, FlowState &s, const std::vector<double> &D_simplec,
-                                   const BoundaryConditions &boundaries, CavitationModel &cavitation, double relaxation)
+                                   const BoundaryConditions &boundaries, CavitationModel &cavitation, double relaxation,
+                                   const TimeLevel *time)
   {
     const std::size_t n = mesh.n_cells();
     const double rho = density;
@@ -89,7 +90,7 @@ namespace servodrift::flow
     std::vector<double> diag(n, 0.0), coefficient(mesh.n_faces(), 0.0);
     // the mixture's mass balance: the upwind mixture density ratio m of each face (1 without
     // cavitation) weights flux and correction alike, so the matrix stays symmetric
-    const std::vector<double> imbalance = cell_mass_imbalance(mesh, F, cavitation);
+    const std::vector<double> imbalance = cell_mass_imbalance(mesh, F, cavitation, time, rho);
     mesh.for_each_face(
       [&](std::size_t f, unsigned int P, unsigned int N) {
         const double m = cavitation.face_mixture_ratio(f, F[f]);

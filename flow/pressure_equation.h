@@ -22,9 +22,11 @@ namespace servodrift::flow
 
     /// Corrects the fluxes F (in: F*, out: conservative), the velocities and the pressure of
     /// `state' (the pressure by `relaxation' times the correction, through the cavitation model);
-    /// returns sum |m F*| of the liquid cells' imbalances before the correction.
+    /// returns sum |m F*| of the liquid cells' imbalances before the correction. In a time step
+    /// (`time') a liquid cell's mass balance holds the change of its mass since the old levels.
     double correct(std::vector<double> &F, FlowState &state, const std::vector<double> &D_simplec,
-                   const BoundaryConditions &boundaries, CavitationModel &cavitation, double relaxation);
+                   const BoundaryConditions &boundaries, CavitationModel &cavitation, double relaxation,
+                   const TimeLevel *time = nullptr);
 
   private:
     const FvMesh &mesh;

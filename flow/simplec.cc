@@ -73,7 +73,8 @@ namespace servodrift::flow
         if (previous.dt > 0)
           add_time_step_correction(mesh, fluid.density, previous, momentum.D(), cavitation.mixture_ratios(), boundaries, F);
         throughput = continuity_reference(mesh, F, boundaries.velocity_inlet_inflow());
-        imbalance = pressure.correct(F, state, momentum.D_simplec(), boundaries, cavitation, control.pressure_relaxation());
+        imbalance = pressure.correct(F, state, momentum.D_simplec(), boundaries, cavitation, control.pressure_relaxation(),
+                                     previous.dt > 0 ? &previous : nullptr);
         state.flux = std::move(F);
       }
     // the models after the new fluxes: cavitation, the pressure boundaries' inflow, turbulence
