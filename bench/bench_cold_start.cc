@@ -3,7 +3,9 @@
 // neighbouring case) on the flow stage's path (flow/pilot_field_cases.h's Chain: the case from rest
 // with its pressure continuation, once more with half the continuation steps if that fails, SST and
 // Launder-Sharma then from the two-layer k-epsilon's solution, and a case that still stalls marched in
-// time for its time average), with every flow model. Prints per case the outcome (converged, or flagged 2 with the solver's
+// time for its time average), with every flow model. Cases 28-31 are the sweep's stalled hot orifice
+// cases at 15.45 MPa on its path: after the chain's 1.03 MPa state, that state alone from rest (28,
+// 29) or as the sweep's orifice path reaches it from 120 degC (30, 31). Prints per case the outcome (converged, or flagged 2 with the solver's
 // reason on stderr), the iterations, the wall time, C_d and the flapper force. Not a test (minutes).
 //   OMP_THREAD_LIMIT=1 build/bench/bench_cold_start [case numbers, default all, e.g. 1,4,7] [parameter=value ...]
 // (extra arguments are `--set' entries, e.g. 'Flow solver/Report interval=100' for the residual history)
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -36,6 +39,12 @@ namespace
     bool cavitation;
     double realizability; ///< Flow solver/Realizability coefficient (0: off)
     double temperature = 40; ///< [degC]
+    /// [Pa] if > 0: the chain first solves this pressure difference and starts the case from its
+    /// fields, as the sweep does after the cases between were time-averaged or flagged
+    double after_pressure_difference = 0;
+    /// [degC] with after_pressure_difference: that case is solved as the sweep's orifice path does,
+    /// at every 10 degC from this temperature down, each from the hotter's state
+    double path_from = 0;
   };
 
   PilotStageParameters::FlowModel flow_model(Turbulence t)
@@ -96,6 +105,10 @@ int main(int argc, char **argv)
     {"Launder-Sharma 60 um at 100 degC, 10.3 MPa", nozzle, Turbulence::k_epsilon_launder_sharma, 1, 60e-6, 10.3e6, true, 0.6, 100},
     {"Launder-Sharma 70 um at 90 degC, 10.3 MPa", nozzle, Turbulence::k_epsilon_launder_sharma, 1, 70e-6, 10.3e6, true, 0.6, 90},
     {"Launder-Sharma 60 um at 100 degC, 10.3 MPa, single phase", nozzle, Turbulence::k_epsilon_launder_sharma, 1, 60e-6, 10.3e6, false, 0.6, 100},
+    {"Launder-Sharma orifice at 100 degC, 15.45 MPa after 1.03 MPa", orifice, Turbulence::k_epsilon_launder_sharma, 1, 0, 15.45e6, true, 0.6, 100, 1.03e6},
+    {"Launder-Sharma orifice at 90 degC, 15.45 MPa after 1.03 MPa", orifice, Turbulence::k_epsilon_launder_sharma, 1, 0, 15.45e6, true, 0.6, 90, 1.03e6},
+    {"Launder-Sharma orifice at 100 degC, 15.45 MPa after the path's 1.03 MPa", orifice, Turbulence::k_epsilon_launder_sharma, 1, 0, 15.45e6, true, 0.6, 100, 1.03e6, 120},
+    {"Launder-Sharma orifice at 90 degC, 15.45 MPa after the path's 1.03 MPa", orifice, Turbulence::k_epsilon_launder_sharma, 1, 0, 15.45e6, true, 0.6, 90, 1.03e6, 120},
   };
   std::set<std::size_t> chosen;
   std::vector<std::string> settings{"Output/Progress=none", "Output/Flow fields=none"};
@@ -134,6 +147,18 @@ int main(int argc, char **argv)
       std::fflush(stdout);
       Chain chain(valve, s.geometry, s.temperature);
       using namespace case_record;
+      std::optional<FlowFields> hotter;
+      for (double T = s.path_from; s.path_from > s.temperature && T > s.temperature; T -= 10)
+        {
+          Chain path(valve, s.geometry, T);
+          path.solve(s.gap, s.after_pressure_difference, hotter);
+          if (const auto state = path.state())
+            hotter = state->fields;
+        }
+      if (hotter)
+        chain.solve(s.gap, s.after_pressure_difference, hotter);
+      else if (s.after_pressure_difference > 0)
+        chain.solve(s.gap, s.after_pressure_difference);
       const std::vector<double> r = chain.solve(s.gap, s.pressure_difference);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (r[flag] == flags::not_converged && r[averaged_time] > 0)

@@ -222,6 +222,13 @@ namespace servodrift::flow
           else if (tenths && step % tenth == 0)
             std::fprintf(stderr, "servodrift: %s: time step %u of %u (t %.3g s), C_d %.4f\n", where.c_str(), step, planned,
                          time, r.discharge_coefficient);
+        }, [&](const TimeAverage &rejected) {
+          std::fprintf(stderr,
+                       "servodrift: note: %s: %u of its %u averaged time steps at Courant number %g stopped at the "
+                       "step's iteration cap short of its tolerance, more than %g %%: marched again at Courant number "
+                       "%g (`Pilot stage/Field time step halvings')\n",
+                       where.c_str(), rejected.unconverged_steps, rejected.averaged_steps, rejected.courant_number,
+                       100 * unconverged_steps_limit, rejected.courant_number / 2);
         });
       }
     catch (const std::exception &e) // diverged, or no flow to set a time step by
@@ -243,10 +250,10 @@ namespace servodrift::flow
       {
         std::cerr << "servodrift: warning: " << where << ": " << a.unconverged_steps << " of its " << a.averaged_steps
                   << " averaged time steps stopped at the step's iteration cap short of its tolerance, more than "
-                  << format_number(100 * unconverged_steps_limit)
-                  << " %: the mean is not that of the marched equations (a smaller `Pilot stage/Field time step "
-                     "Courant number' or more `Field time step iterations'); listed in flow/*_time_averages.csv, not "
-                     "used\n";
+                  << format_number(100 * unconverged_steps_limit) << " % at Courant number "
+                  << format_number(a.courant_number) << " (after " << a.courant_halvings
+                  << " halvings): the mean is not that of the marched equations (more `Pilot stage/Field time step "
+                     "halvings' or `Field time step iterations'); listed in flow/*_time_averages.csv, not used\n";
         return false;
       }
     if (a.unconverged_steps > 0)

@@ -137,72 +137,97 @@ namespace servodrift::flow
     return true;
   }
 
-  TimeAverage time_average(PilotField &field, double dp, const PilotStageParameters &settings,
-                           const std::function<void(unsigned int, unsigned int, double, const PilotFieldResult &)> &each_step)
+  namespace
   {
-    TimeAverage a;
-    a.time_step = field.courant_time_step(settings.field_time_step_courant);
-    AveragingPlan plan(settings.field_time_steps, settings.field_averaged_fraction, settings.field_time_steps_limit,
-                       settings.field_time_average_uncertainty_limit);
-    const bool has_flapper = field.geometry() == PilotGeometry::nozzle_flapper;
-    RunningMoments Q, C_d, Re, force, land, jet, bore;
-    std::vector<double> C_d_series, force_series; // over the averaged steps, for the standard errors
-    RunningFields fields;
-    PilotFieldResult &m = a.mean;
-    // the window's spreads, means and decorrelation lag into a; returns the averaged steps its
-    // motion needs (0: spanned)
-    auto motion = [&] {
-      a.discharge_coefficient_spread = C_d.standard_deviation();
-      a.flapper_force_spread = force.standard_deviation();
-      m.discharge_coefficient = C_d.mean, m.flapper_force = force.mean;
-      a.decorrelation_steps = static_cast<unsigned int>(
-        std::max(decorrelation_lag(C_d_series), has_flapper ? decorrelation_lag(force_series) : std::size_t(0)));
-      a.averaged_steps = plan.averaged();
-      return window_spans_motion(a) ? 0u : lags_per_window * a.decorrelation_steps;
-    };
-    auto relative_errors = [&] {
-      a.discharge_coefficient_uncertainty = batch_means_standard_error(C_d_series, mean_batches);
-      a.flapper_force_uncertainty = batch_means_standard_error(force_series, mean_batches);
-      a.discharge_coefficient_relative_uncertainty = a.discharge_coefficient_uncertainty / std::abs(C_d.mean);
-      a.flapper_force_relative_uncertainty = has_flapper ? a.flapper_force_uncertainty / std::abs(force.mean) : 0.0;
-      return std::max(a.discharge_coefficient_relative_uncertainty, a.flapper_force_relative_uncertainty);
-    };
-    for (unsigned int step = 0; step < plan.planned(); ++step)
+    /// One march at the time step of `courant' from the field's current state: time_average's
+    /// plan, its statistics and its gate on capped steps.
+    TimeAverage march(PilotField &field, double dp, const PilotStageParameters &settings, double courant,
+                      const std::function<void(unsigned int, unsigned int, double, const PilotFieldResult &)> &each_step)
+    {
+      TimeAverage a;
+      a.courant_number = courant;
+      a.time_step = field.courant_time_step(courant);
+      AveragingPlan plan(settings.field_time_steps, settings.field_averaged_fraction, settings.field_time_steps_limit,
+                         settings.field_time_average_uncertainty_limit);
+      const bool has_flapper = field.geometry() == PilotGeometry::nozzle_flapper;
+      RunningMoments Q, C_d, Re, force, land, jet, bore;
+      std::vector<double> C_d_series, force_series; // over the averaged steps, for the standard errors
+      RunningFields fields;
+      PilotFieldResult &m = a.mean;
+      // the window's spreads, means and decorrelation lag into a; returns the averaged steps its
+      // motion needs (0: spanned)
+      auto motion = [&] {
+        a.discharge_coefficient_spread = C_d.standard_deviation();
+        a.flapper_force_spread = force.standard_deviation();
+        m.discharge_coefficient = C_d.mean, m.flapper_force = force.mean;
+        a.decorrelation_steps = static_cast<unsigned int>(
+          std::max(decorrelation_lag(C_d_series), has_flapper ? decorrelation_lag(force_series) : std::size_t(0)));
+        a.averaged_steps = plan.averaged();
+        return window_spans_motion(a) ? 0u : lags_per_window * a.decorrelation_steps;
+      };
+      auto relative_errors = [&] {
+        a.discharge_coefficient_uncertainty = batch_means_standard_error(C_d_series, mean_batches);
+        a.flapper_force_uncertainty = batch_means_standard_error(force_series, mean_batches);
+        a.discharge_coefficient_relative_uncertainty = a.discharge_coefficient_uncertainty / std::abs(C_d.mean);
+        a.flapper_force_relative_uncertainty = has_flapper ? a.flapper_force_uncertainty / std::abs(force.mean) : 0.0;
+        return std::max(a.discharge_coefficient_relative_uncertainty, a.flapper_force_relative_uncertainty);
+      };
+      for (unsigned int step = 0; step < plan.planned(); ++step)
+        {
+          const PilotFieldResult r = field.advance(dp, a.time_step, settings.field_time_step_iterations, step_tolerance);
+          m.iterations += r.iterations;
+          if (each_step)
+            each_step(step + 1, plan.planned(), (step + 1) * a.time_step, r);
+          if (!plan.averages(step))
+            continue;
+          a.unconverged_steps += !r.step_converged;
+          Q.add(r.flow_rate), C_d.add(r.discharge_coefficient), Re.add(r.reynolds_number);
+          force.add(r.flapper_force), land.add(r.land_force), jet.add(r.jet_force), bore.add(r.bore_pressure);
+          C_d_series.push_back(r.discharge_coefficient), force_series.push_back(r.flapper_force);
+          fields.add(field.fields());
+          const bool start = Q.count == 1;
+          m.minimum_pressure = start ? r.minimum_pressure : std::min(m.minimum_pressure, r.minimum_pressure);
+          m.minimum_absolute_pressure =
+            start ? r.minimum_absolute_pressure : std::min(m.minimum_absolute_pressure, r.minimum_absolute_pressure);
+          m.cavitating = m.cavitating || r.cavitating;
+          m.max_wall_y_plus = std::max(m.max_wall_y_plus, r.max_wall_y_plus);
+          m.pressure_difference = r.pressure_difference, m.turbulence = r.turbulence;
+          // at the end of the plan: a mean not yet pinned down gets the averaged time it asks for,
+          // unless the gate on capped steps refuses it already (more steps would only add to a mean
+          // that is not used; the capped fraction of a stationary run does not fall with its length)
+          if (plan.at_end(step))
+            {
+              const unsigned int steps_needed = motion();
+              if (steps_converged(a))
+                plan.lengthen(relative_errors(), steps_needed);
+            }
+        }
+      m.flow_rate = Q.mean, m.discharge_coefficient = C_d.mean, m.reynolds_number = Re.mean;
+      m.flapper_force = force.mean, m.land_force = land.mean, m.jet_force = jet.mean, m.bore_pressure = bore.mean;
+      motion();
+      relative_errors();
+      a.averaged_time = a.averaged_steps * a.time_step;
+      a.mean_fields = fields.result();
+      return a;
+    }
+  } // namespace
+
+  TimeAverage time_average(PilotField &field, double dp, const PilotStageParameters &settings,
+                           const std::function<void(unsigned int, unsigned int, double, const PilotFieldResult &)> &each_step,
+                           const std::function<void(const TimeAverage &rejected)> &before_halving)
+  {
+    double courant = settings.field_time_step_courant;
+    unsigned int iterations = 0, halvings = 0;
+    for (;; courant /= 2, ++halvings)
       {
-        const PilotFieldResult r = field.advance(dp, a.time_step, settings.field_time_step_iterations, step_tolerance);
-        m.iterations += r.iterations;
-        if (each_step)
-          each_step(step + 1, plan.planned(), (step + 1) * a.time_step, r);
-        if (!plan.averages(step))
-          continue;
-        a.unconverged_steps += !r.step_converged;
-        Q.add(r.flow_rate), C_d.add(r.discharge_coefficient), Re.add(r.reynolds_number);
-        force.add(r.flapper_force), land.add(r.land_force), jet.add(r.jet_force), bore.add(r.bore_pressure);
-        C_d_series.push_back(r.discharge_coefficient), force_series.push_back(r.flapper_force);
-        fields.add(field.fields());
-        const bool start = Q.count == 1;
-        m.minimum_pressure = start ? r.minimum_pressure : std::min(m.minimum_pressure, r.minimum_pressure);
-        m.minimum_absolute_pressure =
-          start ? r.minimum_absolute_pressure : std::min(m.minimum_absolute_pressure, r.minimum_absolute_pressure);
-        m.cavitating = m.cavitating || r.cavitating;
-        m.max_wall_y_plus = std::max(m.max_wall_y_plus, r.max_wall_y_plus);
-        m.pressure_difference = r.pressure_difference, m.turbulence = r.turbulence;
-        // at the end of the plan: a mean not yet pinned down gets the averaged time it asks for,
-        // unless the gate on capped steps refuses it already (more steps would only add to a mean
-        // that is not used; the capped fraction of a stationary run does not fall with its length)
-        if (plan.at_end(step))
-          {
-            const unsigned int steps_needed = motion();
-            if (steps_converged(a))
-              plan.lengthen(relative_errors(), steps_needed);
-          }
+        TimeAverage a = march(field, dp, settings, courant, each_step);
+        iterations += a.mean.iterations;
+        a.mean.iterations = iterations;
+        a.courant_halvings = halvings;
+        if (steps_converged(a) || halvings == settings.field_time_step_halvings)
+          return a;
+        if (before_halving)
+          before_halving(a);
       }
-    m.flow_rate = Q.mean, m.discharge_coefficient = C_d.mean, m.reynolds_number = Re.mean;
-    m.flapper_force = force.mean, m.land_force = land.mean, m.jet_force = jet.mean, m.bore_pressure = bore.mean;
-    motion();
-    relative_errors();
-    a.averaged_time = a.averaged_steps * a.time_step;
-    a.mean_fields = fields.result();
-    return a;
   }
 } // namespace servodrift::flow

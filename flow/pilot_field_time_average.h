@@ -31,6 +31,7 @@ namespace servodrift::flow
     /// `Field time average uncertainty limit' bounds.
     double discharge_coefficient_relative_uncertainty = 0; ///< [1]
     double flapper_force_relative_uncertainty = 0;         ///< [1]
+    double courant_number = 0;               ///< of the time step, at the march's start [1]
     double time_step = 0;                    ///< [s]
     double averaged_time = 0;                ///< [s]
     unsigned int averaged_steps = 0;         ///< the steps after the start's transient
@@ -38,6 +39,9 @@ namespace servodrift::flow
     /// tolerance (a cavity collapsing within a step): a few are harmless in a mean over thousands,
     /// many say the time step is too long for the flow.
     unsigned int unconverged_steps = 0;
+    /// The marches before this one whose steps the cap stopped too often (steps_converged), each
+    /// followed by one at half the Courant number (`Field time step halvings').
+    unsigned int courant_halvings = 0;
     /// The larger decorrelation_lag of the averaged C_d and flapper force series [steps]: batch
     /// means hold if the averaged steps are at least lags_per_window times it (window_spans_motion).
     unsigned int decorrelation_steps = 0;
@@ -127,10 +131,16 @@ namespace servodrift::flow
   /// uncertainty limit', the averaged time is lengthened by AveragingPlan, up to `Field time
   /// steps limit' steps in all (the start's transient is cut once), and while the averaged time
   /// does not span the flow's slowest motion (window_spans_motion); not if more than
-  /// unconverged_steps_limit of the steps averaged so far were capped (steps_converged). Throws
-  /// std::runtime_error if a step diverges, std::invalid_argument if nothing flows. `each_step', if set, sees every step's
-  /// results and the steps planned so far (a progress report).
+  /// unconverged_steps_limit of the steps averaged so far were capped (steps_converged). A march
+  /// whose steps the cap stopped too often is marched again from where it ended at half the Courant
+  /// number, up to `Field time step halvings' times: a shorter step changes the fields less, so its
+  /// iterations reach the tolerance within the cap more often (a cavity collapsing within a step is
+  /// what stops them); the last march is returned, its iterations those of all. Throws
+  /// std::runtime_error if a step diverges, std::invalid_argument if nothing flows. `each_step', if
+  /// set, sees every step's results and the steps planned so far (a progress report; the steps of a
+  /// march again count from 1), `before_halving' each march that is marched again.
   TimeAverage time_average(
     PilotField &field, double pressure_difference, const PilotStageParameters &settings,
-    const std::function<void(unsigned int step, unsigned int planned, double time, const PilotFieldResult &)> &each_step = {});
+    const std::function<void(unsigned int step, unsigned int planned, double time, const PilotFieldResult &)> &each_step = {},
+    const std::function<void(const TimeAverage &rejected)> &before_halving = {});
 } // namespace servodrift::flow

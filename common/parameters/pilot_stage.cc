@@ -92,6 +92,12 @@ namespace servodrift
                       "counted (flow/<geometry>_time_averages.csv). Raised to 200, hot cavitating cases "
                       "cost 12-23 % more and their means move by less than their standard errors "
                       "(doc/validation.md). [1]");
+    prm.declare_entry("Field time step halvings", "2", Patterns::Integer(0, 10),
+                      "Field level, time average: a march more than 10 % of whose averaged steps the "
+                      "iteration cap (`Field time step iterations') stopped short of their tolerance is "
+                      "not used; it is marched again, from where it ended, at half the Courant number, at "
+                      "most this many times (each halving doubles the cost of a march). 0: such a march "
+                      "is flagged 2 at once. [1]");
     prm.declare_entry("Field time steps", "2000", Patterns::Integer(20, 10000000),
                       "Field level, time average: the time steps marched first. [1]");
     prm.declare_entry("Field time steps limit", "10000", Patterns::Integer(20, 10000000),
@@ -180,6 +186,7 @@ namespace servodrift
     field_time_average = prm.get_bool("Field time average");
     field_time_step_courant = prm.get_double("Field time step Courant number");
     field_time_step_iterations = static_cast<unsigned int>(prm.get_integer("Field time step iterations"));
+    field_time_step_halvings = static_cast<unsigned int>(prm.get_integer("Field time step halvings"));
     field_time_steps = static_cast<unsigned int>(prm.get_integer("Field time steps"));
     field_time_steps_limit = static_cast<unsigned int>(prm.get_integer("Field time steps limit"));
     field_averaged_fraction = prm.get_double("Field averaged fraction");

@@ -36,6 +36,7 @@ namespace servodrift
     bool field_time_average;        ///< a case without a steady solution is reported by its time average
     double field_time_step_courant; ///< Courant number of the time step of a time average [1]
     unsigned int field_time_step_iterations; ///< SIMPLEC iterations of a time step at most
+    unsigned int field_time_step_halvings; ///< marches again at half the Courant number if too many steps capped
     unsigned int field_time_steps;  ///< time steps of a time average, first
     unsigned int field_time_steps_limit; ///< time steps of a time average at most, lengthened for its uncertainty
     double field_averaged_fraction; ///< the last fraction of them that is averaged [1]
