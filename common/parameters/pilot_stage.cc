@@ -92,12 +92,13 @@ namespace servodrift
                       "counted (flow/<geometry>_time_averages.csv). Raised to 200, hot cavitating cases "
                       "cost 12-23 % more and their means move by less than their standard errors "
                       "(doc/validation.md). [1]");
-    prm.declare_entry("Field time step halvings", "2", Patterns::Integer(0, 10),
+    prm.declare_entry("Field time step halvings", "0", Patterns::Integer(0, 10),
                       "Field level, time average: a march more than 10 % of whose averaged steps the "
                       "iteration cap (`Field time step iterations') stopped short of their tolerance is "
                       "not used; it is marched again, from where it ended, at half the Courant number, at "
-                      "most this many times (each halving doubles the cost of a march). 0: such a march "
-                      "is flagged 2 at once. [1]");
+                      "most this many times (each halving doubles the cost of a march). For steps too "
+                      "long for the cap; the Launder-Sharma orifice's capped marches at 90 degC capped "
+                      "more at half the step (doc/validation.md). 0: flagged 2 at once. [1]");
     prm.declare_entry("Field time steps", "2000", Patterns::Integer(20, 10000000),
                       "Field level, time average: the time steps marched first. [1]");
     prm.declare_entry("Field time steps limit", "10000", Patterns::Integer(20, 10000000),
