@@ -93,12 +93,10 @@ namespace servodrift
                       "cost 12-23 % more and their means move by less than their standard errors "
                       "(doc/validation.md). [1]");
     prm.declare_entry("Field time step halvings", "0", Patterns::Integer(0, 10),
-                      "Field level, time average: a march more than 10 % of whose averaged steps the "
-                      "iteration cap (`Field time step iterations') stopped short of their tolerance is "
-                      "not used; it is marched again, from where it ended, at half the Courant number, at "
-                      "most this many times (each halving doubles the cost of a march). For steps too "
-                      "long for the cap; the Launder-Sharma orifice's capped marches at 90 degC capped "
-                      "more at half the step (doc/validation.md). 0: flagged 2 at once. [1]");
+                      "Field level, time average: a march with more than 10 % of its averaged steps "
+                      "capped (`Field time step iterations') is marched again from where it ended at half "
+                      "the Courant number, at most this many times; each halving doubles a march's cost. "
+                      "0: flagged 2 at once. For steps too long for the cap (doc/method.md). [1]");
     prm.declare_entry("Field time steps", "2000", Patterns::Integer(20, 10000000),
                       "Field level, time average: the time steps marched first. [1]");
     prm.declare_entry("Field time steps limit", "10000", Patterns::Integer(20, 10000000),
