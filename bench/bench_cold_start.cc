@@ -43,7 +43,8 @@ namespace
     /// fields, as the sweep does after the cases between were time-averaged or flagged
     double after_pressure_difference = 0;
     /// [degC] with after_pressure_difference: that case is solved as the sweep's orifice path does,
-    /// at every 10 degC from this temperature down, each from the hotter's state
+    /// at every table temperature (`Sweeps/Table temperatures') from this one down, each from the
+    /// hotter's state
     double path_from = 0;
   };
 
@@ -148,9 +149,12 @@ int main(int argc, char **argv)
       Chain chain(valve, s.geometry, s.temperature);
       using namespace case_record;
       std::optional<FlowFields> hotter;
-      for (double T = s.path_from; s.path_from > s.temperature && T > s.temperature; T -= 10)
+      const auto &table = valve.sweeps.table_temperatures;
+      for (auto T = table.rbegin(); T != table.rend(); ++T)
         {
-          Chain path(valve, s.geometry, T);
+          if (*T > s.path_from || *T <= s.temperature)
+            continue;
+          Chain path(valve, s.geometry, *T);
           path.solve(s.gap, s.after_pressure_difference, hotter);
           if (const auto state = path.state())
             hotter = state->fields;

@@ -37,7 +37,8 @@ namespace servodrift::flow
     unsigned int averaged_steps = 0;         ///< the steps after the start's transient
     /// Averaged steps whose implicit equations the step's iteration cap stopped short of its
     /// tolerance (a cavity collapsing within a step): a few are harmless in a mean over thousands,
-    /// many say the time step is too long for the flow.
+    /// many say the step's equations are not solved (a step too long for the flow, or, as in the
+    /// Launder-Sharma orifice's far stalls, a motion whose steps cap at any step length).
     unsigned int unconverged_steps = 0;
     /// The marches before this one whose steps the cap stopped too often (steps_converged), each
     /// followed by one at half the Courant number (`Field time step halvings').
