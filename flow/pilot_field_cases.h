@@ -137,20 +137,27 @@ namespace servodrift::flow
     /// Continuation step control: a case that does not converge from its starting fields is tried
     /// once more, from the chain's last converged fields of its own model through the geometric
     /// mean of the two pressure levels (half the step, in the logarithm), or, where there is no
-    /// such state at this gap or it is the same pressure level, from rest (laminar start-up) with
-    /// half the steps of `Field continuation ratio' (in the logarithm), so that the retry does not
-    /// repeat the path that failed. A laminar or k-epsilon case's second failure propagates; SST
-    /// and Launder-Sharma go on to solve_from_k_epsilon. Where that diverges after a retry that
-    /// stalled, the retry's stall propagates with its state in `slot', for the time average.
+    /// such state at this gap or it is the same pressure level, from rest (solve_from_rest), so that
+    /// the retry does not repeat the path that failed. A laminar or k-epsilon case stops there; SST
+    /// and Launder-Sharma go on to solve_from_k_epsilon and then, if no attempt started from rest,
+    /// to solve_from_rest: the chain's path can lead to a state far from any steady one that a start
+    /// from rest does not reach (doc/changes.md, twenty-second look). If every attempt fails, the
+    /// stall nearest a steady state (smallest largest residual) propagates with its fields in
+    /// `slot', for the time average, its message listing the attempts; if none stalled, the last
+    /// failure propagates. Defined in flow/pilot_field_retry.cc.
     PilotFieldResult solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
                                       bool started_elsewhere);
-    /// The last rung of the retry, for the models less robust than the two-layer k-epsilon (SST,
+    /// The case from rest (laminar start-up) into a new `slot', with half the steps of `Field
+    /// continuation ratio' (in the logarithm) for this solve.
+    PilotFieldResult solve_from_rest(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
+    /// A rung of the retry, for the models less robust than the two-layer k-epsilon (SST,
     /// Launder-Sharma): the case solved with the two-layer k-epsilon (on its own retry path, from the
     /// chain's last fields if they are this model's), and model t started from that solution at the
-    /// same pressure level, as users of CFD codes start SST from a converged k-epsilon field. SST's
-    /// cavitating orifice at 20.6 MPa diverges on its own as the cavity grows by thousands of cells
-    /// in a few iterations; from k-epsilon's cavity it converges (doc/validation.md, "Robustness").
-    /// Its iterations include k-epsilon's; a failure of either propagates.
+    /// same pressure level in a new `slot', as users of CFD codes start SST from a converged
+    /// k-epsilon field. SST's cavitating orifice at 20.6 MPa diverges on its own as the cavity grows
+    /// by thousands of cells in a few iterations; from k-epsilon's cavity it converges
+    /// (doc/validation.md, "Robustness"). Its iterations include k-epsilon's; a failure of either
+    /// propagates (`slot' stays empty if k-epsilon's failed).
     PilotFieldResult solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
     /// A case whose steady iteration stalled (`why'): its time average into `record'
     /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too or the uncertainty

@@ -26,13 +26,14 @@ namespace servodrift::flow
     }
 
     /// A run that fails: its fields written as VTU where `failure_output' says, then the error.
-    template <class Error>
-    [[noreturn]] void fail(const SimplecSolver &solver, const FvMesh &mesh, const std::string &reason)
+    template <class Error, class... Details>
+    [[noreturn]] void fail(const SimplecSolver &solver, const FvMesh &mesh, const std::string &reason,
+                           const Details &...details)
     {
       const std::string &vtu = solver.failure_output;
       if (!vtu.empty())
         solver.write_vtu(vtu);
-      throw Error("flow: " + mesh.source + ": " + reason + (vtu.empty() ? "" : "; fields in " + vtu));
+      throw Error("flow: " + mesh.source + ": " + reason + (vtu.empty() ? "" : "; fields in " + vtu), details...);
     }
   } // namespace
 
@@ -166,7 +167,7 @@ namespace servodrift::flow
           {
             case IterationControl::Verdict::converged: converged = true; break;
             case IterationControl::Verdict::diverged: fail<std::runtime_error>(*this, d.mesh, control.reason());
-            case IterationControl::Verdict::not_converged: fail<NotConverged>(*this, d.mesh, control.reason());
+            case IterationControl::Verdict::not_converged: fail<NotConverged>(*this, d.mesh, control.reason(), r);
             case IterationControl::Verdict::go_on: converged = decided && decided(r); break;
           }
       }

@@ -43,7 +43,13 @@ namespace servodrift::flow
   class NotConverged : public std::runtime_error
   {
   public:
-    using std::runtime_error::runtime_error;
+    explicit NotConverged(const std::string &what, const Residuals &at_stall = {})
+      : std::runtime_error(what)
+      , residuals(at_stall)
+    {}
+    /// where the iterations stopped; zero if they converged to a state that is not the model's
+    /// solution (a limiter held): how near a steady state the stall's fields are
+    Residuals residuals;
   };
 
   class SimplecSolver

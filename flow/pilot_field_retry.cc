@@ -1,0 +1,197 @@
+// The retry ladder of the field-level pilot chain (Chain::solve_with_retry): the attempts at a case
+// that does not converge from the chain's state, and which of their stalls a time average marches from.
+#include "flow/pilot_field_retry.h"
+
+#include "common/error.h"
+#include "flow/pilot_field.h"
+#include "flow/pilot_field_cases.h"
+#include "flow/simplec.h"
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace servodrift::flow
+{
+  void FailedAttempts::add(const std::string &how, const PilotField &field)
+  {
+    last_failure = std::current_exception();
+    ++count;
+    list += (list.empty() ? "" : "; ") + how;
+    nearest_is_last = false;
+    try
+      {
+        std::rethrow_exception(last_failure);
+      }
+    catch (const NotConverged &e)
+      {
+        const double residual = largest_residual(e.residuals);
+        list += " stalled at largest residual " + format_number(residual);
+        if (residual < nearest_residual) // the first of equal stalls stands
+          {
+            nearest_residual = residual;
+            nearest_residuals = e.residuals;
+            nearest_failure = last_failure;
+            nearest_fields = field.fields();
+            nearest_field = &field;
+            nearest_is_last = true;
+          }
+      }
+    catch (const std::exception &)
+      {
+        list += " diverged";
+      }
+  }
+
+  void FailedAttempts::add_without_state(const std::string &how)
+  {
+    last_failure = std::current_exception();
+    ++count;
+    list += (list.empty() ? "" : "; ") + how + " failed";
+    nearest_is_last = false;
+  }
+
+  bool FailedAttempts::restore_nearest(PilotField &field) const
+  {
+    if (!any_stalled() || (nearest_is_last && &field == nearest_field))
+      return false;
+    field.set_fields(nearest_fields);
+    return true;
+  }
+
+  void FailedAttempts::rethrow() const
+  {
+    if (!any_stalled())
+      std::rethrow_exception(last_failure);
+    if (count < 2)
+      std::rethrow_exception(nearest_failure);
+    try
+      {
+        std::rethrow_exception(nearest_failure);
+      }
+    catch (const NotConverged &e)
+      {
+        throw NotConverged(std::string(e.what()) + " (the stall nearest a steady state of " + std::to_string(count) +
+                             " attempts: " + list + ")",
+                           nearest_residuals);
+      }
+  }
+
+  PilotFieldResult Chain::solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
+                                           bool started_elsewhere)
+  {
+    FailedAttempts failed;
+    const bool at_rest = slot->at_rest();
+    try
+      {
+        return slot->solve(dp);
+      }
+    catch (const std::runtime_error &)
+      {
+        failed.add(at_rest ? "from rest" : started_elsewhere ? "from the fields given" : "from the chain's last state",
+                   *slot);
+      }
+    const bool own_state = last && last_model == t && !started_elsewhere && last_dp != dp;
+    bool tried_from_rest = at_rest;
+    try
+      {
+        if (own_state)
+          {
+            slot->set_fields(*last);
+            const double between = std::sqrt(last_dp * dp);
+            PilotFieldResult r = slot->solve(between);
+            const unsigned int iterations = r.iterations;
+            r = slot->solve(dp);
+            r.iterations += iterations;
+            return r;
+          }
+        tried_from_rest = true;
+        return solve_from_rest(slot, t, h, dp);
+      }
+    catch (const std::runtime_error &)
+      {
+        failed.add(own_state ? "from the chain's last state through the mean pressure level" : "from rest in smaller steps",
+                   *slot);
+      }
+    // an attempt in a new field of model t: the slot if it converges, and if it fails too (the
+    // slot holds the last attempt's state, so that restore_nearest knows when it is the nearest)
+    const auto in_new_field = [&](const std::string &how, auto solve) -> std::optional<PilotFieldResult> {
+      std::unique_ptr<PilotField> field;
+      try
+        {
+          const PilotFieldResult r = solve(field);
+          slot = std::move(field);
+          return r;
+        }
+      catch (const std::runtime_error &)
+        {
+          if (!field) // the step before model t failed (k-epsilon's solve, the mesh)
+            {
+              failed.add_without_state(how);
+              return std::nullopt;
+            }
+          failed.add(how, *field);
+          slot = std::move(field);
+        }
+      return std::nullopt;
+    };
+    if (t != Turbulence::laminar && t != Turbulence::k_epsilon)
+      {
+        if (const auto r = in_new_field("from k-epsilon's solution",
+                                        [&](std::unique_ptr<PilotField> &f) { return solve_from_k_epsilon(f, t, h, dp); }))
+          return *r;
+        // from rest, if no attempt started there: a state the chain's path does not reach
+        if (!tried_from_rest)
+          if (const auto r = in_new_field("from rest in smaller steps",
+                                          [&](std::unique_ptr<PilotField> &f) { return solve_from_rest(f, t, h, dp); }))
+            return *r;
+      }
+    // the nearest stall is marched for the time average; its fields go to the case's VTU (a
+    // later attempt, or k-epsilon's on the way to model t, wrote its own there)
+    failed.restore_nearest(*slot);
+    if (failed.any_stalled() && !failure_output.empty())
+      slot->write_vtu(failure_output);
+    failed.rethrow();
+  }
+
+  PilotFieldResult Chain::solve_from_rest(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp)
+  {
+    PilotFieldCase c = conditions;
+    c.turbulence = t;
+    slot = std::make_unique<PilotField>(valve, kind, c, h);
+    slot->set_failure_output(failure_output);
+    // the smaller steps for this solve only: the chain's next cases take the valve's
+    slot->set_continuation_ratio(std::sqrt(valve.pilot.field_continuation_ratio));
+    try
+      {
+        PilotFieldResult r = slot->solve(dp);
+        slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
+        return r;
+      }
+    catch (const std::runtime_error &)
+      {
+        slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
+        throw;
+      }
+  }
+
+  PilotFieldResult Chain::solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp)
+  {
+    PilotFieldCase c = conditions;
+    c.turbulence = Turbulence::k_epsilon;
+    auto k_epsilon = std::make_unique<PilotField>(valve, kind, c, h);
+    k_epsilon->set_failure_output(failure_output);
+    if (last && last_model == t)
+      k_epsilon->set_fields(*last);
+    const PilotFieldResult start = solve_with_retry(k_epsilon, Turbulence::k_epsilon, h, dp, true);
+    c.turbulence = t;
+    slot = std::make_unique<PilotField>(valve, kind, c, h);
+    slot->set_failure_output(failure_output);
+    slot->set_fields(k_epsilon->fields());
+    PilotFieldResult r = slot->solve(dp);
+    r.iterations += start.iterations + start.coarse_mesh_iterations;
+    return r;
+  }
+} // namespace servodrift::flow

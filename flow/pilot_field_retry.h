@@ -1,0 +1,47 @@
+// The failed attempts at one field-level pilot case (the retry ladder of Chain::solve_with_retry,
+// defined in flow/pilot_field_retry.cc): which of their stalls a time average marches from.
+#pragma once
+
+#include "flow/flow_state.h"
+
+#include <exception>
+#include <limits>
+#include <string>
+
+namespace servodrift::flow
+{
+  class PilotField;
+
+  /// The attempts of one case that failed, in order. Of those that stalled (NotConverged), the one
+  /// nearest a steady state, by the largest scaled residual at its stall, is the state its time
+  /// average marches from: a far stall can march into another motion whose steps stop at their
+  /// iteration cap while a near one of the same case averages calmly (Launder-Sharma's orifice at
+  /// 15.45 MPa and 100 degC: continuity 0.20 against 5e-3; doc/changes.md, twenty-second look).
+  class FailedAttempts
+  {
+  public:
+    /// Call in the catch block of attempt `how' (`from rest', ...), whose state is in `field'.
+    void add(const std::string &how, const PilotField &field);
+    /// Call in the catch block of a step that leaves no state of the case's model (the two-layer
+    /// k-epsilon solve that starts another model): listed, never marched.
+    void add_without_state(const std::string &how);
+
+    bool any_stalled() const { return nearest_failure != nullptr; }
+    /// Sets the nearest stall's fields into `field' (of the case's model and mesh) unless `field'
+    /// holds them already; true if it set them.
+    bool restore_nearest(PilotField &field) const;
+    /// Rethrows the nearest stall, its message followed by the list of attempts if there was
+    /// more than one, or, if none stalled, the last failure.
+    [[noreturn]] void rethrow() const;
+
+  private:
+    std::exception_ptr last_failure, nearest_failure;
+    double nearest_residual = std::numeric_limits<double>::infinity();
+    Residuals nearest_residuals;
+    FlowFields nearest_fields;
+    const PilotField *nearest_field = nullptr; ///< the object that held the nearest stall ...
+    bool nearest_is_last = false;              ///< ... and whether no attempt in it came after
+    unsigned int count = 0;
+    std::string list; ///< `<how> stalled at largest residual <r>', `<how> diverged', in order
+  };
+} // namespace servodrift::flow
