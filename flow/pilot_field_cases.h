@@ -139,12 +139,10 @@ namespace servodrift::flow
     /// mean of the two pressure levels (half the step, in the logarithm), or, where there is no
     /// such state at this gap or it is the same pressure level, from rest (solve_from_rest), so that
     /// the retry does not repeat the path that failed. A laminar or k-epsilon case stops there; SST
-    /// and Launder-Sharma go on to solve_from_k_epsilon and then, if no attempt started from rest,
-    /// to solve_from_rest: the chain's path can lead to a state far from any steady one that a start
-    /// from rest does not reach (doc/changes.md, twenty-second look). If every attempt fails, the
-    /// stall nearest a steady state (smallest largest residual) propagates with its fields in
-    /// `slot', for the time average, its message listing the attempts; if none stalled, the last
-    /// failure propagates. Defined in flow/pilot_field_retry.cc.
+    /// and Launder-Sharma go on to solve_from_k_epsilon. If every attempt fails, the stall nearest a
+    /// steady state (smallest largest residual; FailedAttempts) propagates with its fields in `slot',
+    /// for the time average, its message listing the attempts; if none stalled, the last failure
+    /// propagates. Defined in flow/pilot_field_retry.cc.
     PilotFieldResult solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
                                       bool started_elsewhere);
     /// The case from rest (laminar start-up) into a new `slot', with half the steps of `Field

@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <memory>
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -94,7 +93,6 @@ namespace servodrift::flow
                    *slot);
       }
     const bool own_state = last && last_model == t && !started_elsewhere && last_dp != dp;
-    bool tried_from_rest = at_rest;
     try
       {
         if (own_state)
@@ -107,7 +105,6 @@ namespace servodrift::flow
             r.iterations += iterations;
             return r;
           }
-        tried_from_rest = true;
         return solve_from_rest(slot, t, h, dp);
       }
     catch (const std::runtime_error &)
@@ -115,38 +112,26 @@ namespace servodrift::flow
         failed.add(own_state ? "from the chain's last state through the mean pressure level" : "from rest in smaller steps",
                    *slot);
       }
-    // an attempt in a new field of model t: the slot if it converges, and if it fails too (the
-    // slot holds the last attempt's state, so that restore_nearest knows when it is the nearest)
-    const auto in_new_field = [&](const std::string &how, auto solve) -> std::optional<PilotFieldResult> {
-      std::unique_ptr<PilotField> field;
-      try
-        {
-          const PilotFieldResult r = solve(field);
-          slot = std::move(field);
-          return r;
-        }
-      catch (const std::runtime_error &)
-        {
-          if (!field) // the step before model t failed (k-epsilon's solve, the mesh)
-            {
-              failed.add_without_state(how);
-              return std::nullopt;
-            }
-          failed.add(how, *field);
-          slot = std::move(field);
-        }
-      return std::nullopt;
-    };
     if (t != Turbulence::laminar && t != Turbulence::k_epsilon)
       {
-        if (const auto r = in_new_field("from k-epsilon's solution",
-                                        [&](std::unique_ptr<PilotField> &f) { return solve_from_k_epsilon(f, t, h, dp); }))
-          return *r;
-        // from rest, if no attempt started there: a state the chain's path does not reach
-        if (!tried_from_rest)
-          if (const auto r = in_new_field("from rest in smaller steps",
-                                          [&](std::unique_ptr<PilotField> &f) { return solve_from_rest(f, t, h, dp); }))
-            return *r;
+        std::unique_ptr<PilotField> from_k_epsilon;
+        try
+          {
+            const PilotFieldResult r = solve_from_k_epsilon(from_k_epsilon, t, h, dp);
+            slot = std::move(from_k_epsilon);
+            return r;
+          }
+        catch (const std::runtime_error &)
+          {
+            if (!from_k_epsilon) // k-epsilon's solve failed: no state of model t
+              failed.add_without_state("from k-epsilon's solution");
+            else
+              {
+                failed.add("from k-epsilon's solution", *from_k_epsilon);
+                // the slot holds the last attempt's state, so that restore_nearest knows when it is the nearest
+                slot = std::move(from_k_epsilon);
+              }
+          }
       }
     // the nearest stall is marched for the time average; its fields go to the case's VTU (a
     // later attempt, or k-epsilon's on the way to model t, wrote its own there)
