@@ -27,9 +27,14 @@ namespace servodrift::flow
     catch (const NotConverged &e)
       {
         const double residual = largest_residual(e.residuals);
-        list += " stalled at largest residual " + format_number(residual);
-        if (residual < nearest_residual) // the first of equal stalls stands
+        const double level = field.solver().boundary_pressure("inlet");
+        const bool on_the_way = level != case_level;
+        list += " stalled at largest residual " + format_number(residual) +
+                (on_the_way ? " on the way, at " + format_number(level * 1e-6) + " MPa" : "");
+        // the first of equal stalls stands
+        if (on_the_way < nearest_on_the_way || (on_the_way == nearest_on_the_way && residual < nearest_residual))
           {
+            nearest_on_the_way = on_the_way;
             nearest_residual = residual;
             nearest_residuals = e.residuals;
             nearest_failure = last_failure;
@@ -81,7 +86,7 @@ namespace servodrift::flow
   PilotFieldResult Chain::solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
                                            bool started_elsewhere)
   {
-    FailedAttempts failed;
+    FailedAttempts failed(dp);
     const bool at_rest = slot->at_rest();
     try
       {

@@ -13,13 +13,18 @@ namespace servodrift::flow
   class PilotField;
 
   /// The attempts of one case that failed, in order. Of those that stalled (NotConverged), the one
-  /// nearest a steady state, by the largest scaled residual at its stall, is the state its time
-  /// average marches from: a far stall can march into another motion whose steps stop at their
+  /// nearest the case's steady state is the state its time average marches from: a stall at the
+  /// case's pressure level before one on the way (an intermediate level of the continuation, whose
+  /// residuals say nothing of the case's), and among those the smallest largest scaled residual: a far stall can march into another motion whose steps stop at their
   /// iteration cap while a near one of the same case averages calmly (Launder-Sharma's orifice at
   /// 15.45 MPa and 100 degC: continuity 0.20 against 5e-3; doc/changes.md, twenty-second look).
   class FailedAttempts
   {
   public:
+    /// The attempts at a case of pressure difference dp [Pa].
+    explicit FailedAttempts(double dp)
+      : case_level(dp)
+    {}
     /// Call in the catch block of attempt `how' (`from rest', ...), whose state is in `field'.
     void add(const std::string &how, const PilotField &field);
     /// Call in the catch block of a step that leaves no state of the case's model (the two-layer
@@ -35,13 +40,15 @@ namespace servodrift::flow
     [[noreturn]] void rethrow() const;
 
   private:
+    double case_level; ///< [Pa]
     std::exception_ptr last_failure, nearest_failure;
+    bool nearest_on_the_way = true; ///< the nearest stall is on an intermediate level
     double nearest_residual = std::numeric_limits<double>::infinity();
     Residuals nearest_residuals;
     FlowFields nearest_fields;
     const PilotField *nearest_field = nullptr; ///< the object that held the nearest stall ...
     bool nearest_is_last = false;              ///< ... and whether no attempt in it came after
     unsigned int count = 0;
-    std::string list; ///< `<how> stalled at largest residual <r>', `<how> diverged', in order
+    std::string list; ///< `<how> stalled at largest residual <r>[ on the way, at <p> MPa]', `<how> diverged', ...
   };
 } // namespace servodrift::flow

@@ -24,21 +24,30 @@ namespace servodrift::flow
   {
     Residuals stall_at(double continuity) { return Residuals{1e-5, 1e-5, continuity, 1e-5, 1e-5}; }
 
-    /// `field' holding the state marked `marker'.
-    void mark(PilotField &field, double marker)
+    constexpr double case_level = 15.45e6; // [Pa]
+
+    /// `field' holding the state marked `marker', at the inlet pressure `level'.
+    void mark(PilotField &field, double marker, double level = case_level)
     {
       FlowFields f = field.fields();
       f.u.at(0) = marker;
+      bool inlet = false;
+      for (auto &[patch, pressure] : f.boundary_pressures)
+        if (patch == "inlet")
+          pressure = level, inlet = true;
+      ASSERT_TRUE(inlet);
       field.set_fields(f);
+      ASSERT_EQ(field.solver().boundary_pressure("inlet"), level);
     }
 
     double marker_of(const PilotField &field) { return field.fields().u.at(0); }
 
     /// Attempt `how' fails with `failure' while `field' holds the state `marker'.
     template <class Failure>
-    void fail(FailedAttempts &attempts, const std::string &how, PilotField &field, double marker, const Failure &failure)
+    void fail(FailedAttempts &attempts, const std::string &how, PilotField &field, double marker, const Failure &failure,
+              double level = case_level)
     {
-      mark(field, marker);
+      mark(field, marker, level);
       try
         {
           throw failure;
@@ -55,18 +64,20 @@ namespace servodrift::flow
     }
   } // namespace
 
-  // Four attempts: a far stall (0.2), a near one (5e-3), one that diverges, a stall between (0.05).
-  // The near one's state is restored and its failure rethrown with its residuals, its message
-  // naming every attempt in order with its outcome.
+  // Five attempts: a far stall (0.2), a near one (5e-3), one that diverges, a stall between (0.05),
+  // and the nearest by its residual (1e-3) on the way, at an intermediate pressure level, whose
+  // residuals are of another problem. The near one at the case's level is restored and its failure
+  // rethrown with its residuals, its message naming every attempt in order with its outcome.
   TEST(PilotFieldRetry, TheStallNearestASteadyStateIsRestoredAndRethrown)
   {
     const ValveDescription valve = coarse_valve();
     PilotField field(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 100), 0);
-    FailedAttempts attempts;
+    FailedAttempts attempts(case_level);
     fail(attempts, "from the chain's last state", field, 1, NotConverged("far", stall_at(0.2)));
     fail(attempts, "from rest", field, 2, NotConverged("near", stall_at(5e-3)));
     fail(attempts, "from k-epsilon's solution", field, 3, std::runtime_error("diverged"));
     fail(attempts, "from rest in smaller steps", field, 4, NotConverged("between", stall_at(0.05)));
+    fail(attempts, "from its own state", field, 5, NotConverged("on the way", stall_at(1e-3)), 7.3e6);
     ASSERT_TRUE(attempts.any_stalled());
     EXPECT_TRUE(attempts.restore_nearest(field));
     EXPECT_EQ(marker_of(field), 2);
@@ -79,10 +90,10 @@ namespace servodrift::flow
       {
         const std::string what = e.what();
         EXPECT_EQ(e.residuals.continuity, 5e-3);
-        EXPECT_EQ(what.rfind("near (the stall nearest a steady state of 4 attempts: ", 0), 0u) << what;
+        EXPECT_EQ(what.rfind("near (the stall nearest a steady state of 5 attempts: ", 0), 0u) << what;
         EXPECT_NE(what.find("from the chain's last state stalled at largest residual 0.2; from rest stalled at largest "
                             "residual 0.005; from k-epsilon's solution diverged; from rest in smaller steps stalled at "
-                            "largest residual 0.05)"),
+                            "largest residual 0.05; from its own state stalled at largest residual 0.001 on the way, at 7.3 MPa)"),
                   std::string::npos)
           << what;
       }
@@ -90,12 +101,13 @@ namespace servodrift::flow
 
   // The nearest stall is the last attempt, in the field that holds it: nothing to restore (the
   // state marched is the solver's own, as before the ladder kept the nearest); a single attempt's
-  // failure is rethrown as it was, without a list.
+  // failure is rethrown as it was, without a list; an earlier stall in a field used since is set
+  // back; with stalls on the way only, the nearest of those.
   TEST(PilotFieldRetry, ALastNearestStallStaysAndASingleFailureIsRethrownAsItWas)
   {
     const ValveDescription valve = coarse_valve();
     PilotField field(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 100), 0);
-    FailedAttempts one;
+    FailedAttempts one(case_level);
     fail(one, "from rest", field, 1, NotConverged("alone", stall_at(0.1)));
     EXPECT_FALSE(one.restore_nearest(field));
     try
@@ -109,7 +121,7 @@ namespace servodrift::flow
         EXPECT_EQ(e.residuals.continuity, 0.1);
       }
 
-    FailedAttempts two;
+    FailedAttempts two(case_level);
     fail(two, "from the chain's last state", field, 1, NotConverged("far", stall_at(0.2)));
     fail(two, "from rest", field, 2, NotConverged("near", stall_at(5e-3)));
     EXPECT_FALSE(two.restore_nearest(field));
@@ -117,12 +129,21 @@ namespace servodrift::flow
 
     // the nearest stall's field, but another attempt ran in it since: its state is set back
     PilotField other(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 100), 0);
-    FailedAttempts three;
+    FailedAttempts three(case_level);
     fail(three, "from rest", field, 1, NotConverged("near", stall_at(5e-3)));
     fail(three, "from rest in smaller steps", field, 2, NotConverged("far", stall_at(0.2)));
     fail(three, "from k-epsilon's solution", other, 3, NotConverged("farther", stall_at(0.3)));
     EXPECT_TRUE(three.restore_nearest(other));
     EXPECT_EQ(marker_of(other), 1);
+
+    // stalls on the way only: the nearest of them stands (a start, if not the case's own level)
+    FailedAttempts on_the_way(case_level);
+    fail(on_the_way, "from the chain's last state", field, 1, NotConverged("farther", stall_at(0.3)), 5.15e6);
+    fail(on_the_way, "from rest", field, 2, NotConverged("far", stall_at(0.1)), 10.3e6);
+    fail(on_the_way, "from k-epsilon's solution", other, 3, std::runtime_error("diverged"));
+    EXPECT_TRUE(on_the_way.restore_nearest(other));
+    EXPECT_EQ(marker_of(other), 2);
+    EXPECT_EQ(other.solver().boundary_pressure("inlet"), 10.3e6);
   }
 
   // No attempt stalled (every one diverged, or one left no state): the last failure is rethrown as
@@ -131,7 +152,7 @@ namespace servodrift::flow
   {
     const ValveDescription valve = coarse_valve();
     PilotField field(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 100), 0);
-    FailedAttempts attempts;
+    FailedAttempts attempts(case_level);
     fail(attempts, "from the chain's last state", field, 1, std::runtime_error("diverged first"));
     try
       {
