@@ -15,9 +15,11 @@ namespace servodrift::flow
   /// The attempts of one case that failed, in order. Of those that stalled (NotConverged), the one
   /// nearest the case's steady state is the state its time average marches from: a stall at the
   /// case's pressure level before one on the way (an intermediate level of the continuation, whose
-  /// residuals say nothing of the case's), and among those the smallest largest scaled residual: a far stall can march into another motion whose steps stop at their
-  /// iteration cap while a near one of the same case averages calmly (Launder-Sharma's orifice at
-  /// 15.45 MPa and 100 degC: continuity 0.20 against 5e-3; doc/changes.md, twenty-second look).
+  /// residuals are another problem's; marched from one, Launder-Sharma's orifice at 15.45 MPa and
+  /// 90 degC diverged at its first step), and among those the smallest largest scaled residual. Why:
+  /// a far stall can march into another motion whose steps stop at their iteration cap while a near
+  /// one of the same case averages calmly (that orifice at 100 degC: continuity 0.20 against 5e-3;
+  /// doc/changes.md, twenty-second look).
   class FailedAttempts
   {
   public:
