@@ -32,10 +32,10 @@ namespace servodrift::flow
         list += " stalled at largest residual " + format_number(residual) +
                 (on_the_way ? " on the way, at " + format_number(level * 1e-6) + " MPa" : "");
         // the first of equal stalls stands
-        if (on_the_way < nearest_on_the_way || (on_the_way == nearest_on_the_way && residual < nearest_residual))
+        if (!any_stalled() || on_the_way < nearest_on_the_way ||
+            (on_the_way == nearest_on_the_way && residual < largest_residual(nearest_residuals)))
           {
             nearest_on_the_way = on_the_way;
-            nearest_residual = residual;
             nearest_residuals = e.residuals;
             nearest_failure = last_failure;
             nearest_fields = field.fields();

@@ -5,7 +5,6 @@
 #include "flow/flow_state.h"
 
 #include <exception>
-#include <limits>
 #include <string>
 
 namespace servodrift::flow
@@ -45,7 +44,6 @@ namespace servodrift::flow
     double case_level; ///< [Pa]
     std::exception_ptr last_failure, nearest_failure;
     bool nearest_on_the_way = true; ///< the nearest stall is on an intermediate level
-    double nearest_residual = std::numeric_limits<double>::infinity();
     Residuals nearest_residuals;
     FlowFields nearest_fields;
     const PilotField *nearest_field = nullptr; ///< the object that held the nearest stall ...

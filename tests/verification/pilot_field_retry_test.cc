@@ -58,6 +58,24 @@ namespace servodrift::flow
         }
     }
 
+    /// The stall that rethrow() propagates (a test failure, and an empty one, if it throws anything else).
+    NotConverged rethrown_stall(const FailedAttempts &attempts)
+    {
+      try
+        {
+          attempts.rethrow();
+        }
+      catch (const NotConverged &e)
+        {
+          return e;
+        }
+      catch (const std::exception &e)
+        {
+          ADD_FAILURE() << "rethrow() threw no stall: " << e.what();
+        }
+      return NotConverged("");
+    }
+
     ValveDescription coarse_valve()
     {
       return test::valve({"Output/Progress=none", "Output/Flow fields=none", "Pilot stage/Field mesh resolution=0.5"});
@@ -81,22 +99,16 @@ namespace servodrift::flow
     ASSERT_TRUE(attempts.any_stalled());
     EXPECT_TRUE(attempts.restore_nearest(field));
     EXPECT_EQ(marker_of(field), 2);
-    try
-      {
-        attempts.rethrow();
-        FAIL() << "rethrow() returned";
-      }
-    catch (const NotConverged &e)
-      {
-        const std::string what = e.what();
-        EXPECT_EQ(e.residuals.continuity, 5e-3);
-        EXPECT_EQ(what.rfind("near (the stall nearest a steady state of 5 attempts: ", 0), 0u) << what;
-        EXPECT_NE(what.find("from the chain's last state stalled at largest residual 0.2; from rest stalled at largest "
-                            "residual 0.005; from k-epsilon's solution diverged; from rest in smaller steps stalled at "
-                            "largest residual 0.05; from its own state stalled at largest residual 0.001 on the way, at 7.3 MPa)"),
-                  std::string::npos)
-          << what;
-      }
+    const NotConverged e = rethrown_stall(attempts);
+    const std::string what = e.what();
+    EXPECT_EQ(e.residuals.continuity, 5e-3);
+    EXPECT_EQ(what.rfind("near (the stall nearest a steady state of 5 attempts: ", 0), 0u) << what;
+    EXPECT_NE(what.find("from the chain's last state stalled at largest residual 0.2; from rest stalled at largest "
+                        "residual 0.005; from k-epsilon's solution diverged; from rest in smaller steps stalled at "
+                        "largest residual 0.05; from its own state stalled at largest residual 0.001 on the way, at "
+                        "7.3 MPa)"),
+              std::string::npos)
+      << what;
   }
 
   // The nearest stall is the last attempt, in the field that holds it: nothing to restore (the
@@ -110,16 +122,9 @@ namespace servodrift::flow
     FailedAttempts one(case_level);
     fail(one, "from rest", field, 1, NotConverged("alone", stall_at(0.1)));
     EXPECT_FALSE(one.restore_nearest(field));
-    try
-      {
-        one.rethrow();
-        FAIL() << "rethrow() returned";
-      }
-    catch (const NotConverged &e)
-      {
-        EXPECT_STREQ(e.what(), "alone");
-        EXPECT_EQ(e.residuals.continuity, 0.1);
-      }
+    const NotConverged alone = rethrown_stall(one);
+    EXPECT_STREQ(alone.what(), "alone");
+    EXPECT_EQ(alone.residuals.continuity, 0.1);
 
     FailedAttempts two(case_level);
     fail(two, "from the chain's last state", field, 1, NotConverged("far", stall_at(0.2)));
