@@ -26,6 +26,18 @@ namespace servodrift::flow
   };
   /// The largest of them.
   inline double largest_residual(const Residuals &r) { return std::max({r.u, r.v, r.continuity, r.k, r.epsilon}); }
+  /// Which of them is the largest: 0 u, 1 v, 2 continuity, 3 k, 4 epsilon (the turbulence model's
+  /// second equation, epsilon or omega); residual_names names them.
+  inline unsigned int largest_residual_index(const Residuals &r)
+  {
+    const double all[] = {r.u, r.v, r.continuity, r.k, r.epsilon};
+    unsigned int largest = 0;
+    for (unsigned int i = 1; i < 5; ++i)
+      if (all[i] > all[largest])
+        largest = i;
+    return largest;
+  }
+  inline constexpr const char *residual_names[] = {"u", "v", "continuity", "k", "epsilon"};
 
   /// The solution fields, for continuation: what a solver can start from.
   struct FlowFields

@@ -404,6 +404,7 @@ namespace servodrift::flow
     r.iterations = step.iterations;
     r.pressure_relaxation = step.pressure_relaxation;
     r.step_converged = step.converged;
+    r.step_residuals = step.residuals;
     return r;
   }
 

@@ -217,18 +217,20 @@ namespace servodrift::flow
         const bool tenths = interval == 0 && valve.output.progress != OutputParameters::Progress::none;
         a = time_average(field, dp, valve.pilot, [&](unsigned int step, unsigned int planned, double time, const PilotFieldResult &r) {
           if (interval > 0 && step % interval == 0)
-            std::fprintf(stderr, "  time step %u of %u, t %.4g s: C_d %.6f, flapper force %.6f N, %u iterations%s\n", step,
-                         planned, time, r.discharge_coefficient, r.flapper_force, r.iterations, r.cavitating ? ", cavitating" : "");
+            std::fprintf(stderr, "  time step %u of %u, t %.4g s: C_d %.6f, flapper force %.6f N, %u iterations%s%s, largest "
+                         "residual %s %.3g\n", step, planned, time, r.discharge_coefficient, r.flapper_force, r.iterations,
+                         r.step_converged ? "" : " (capped)", r.cavitating ? ", cavitating" : "",
+                         residual_names[largest_residual_index(r.step_residuals)], largest_residual(r.step_residuals));
           else if (tenths && step % tenth == 0)
             std::fprintf(stderr, "servodrift: %s: time step %u of %u (t %.3g s), C_d %.4f\n", where.c_str(), step, planned,
                          time, r.discharge_coefficient);
         }, [&](const TimeAverage &rejected) {
           std::fprintf(stderr,
                        "servodrift: note: %s: %u of its %u averaged time steps at Courant number %g stopped at the "
-                       "step's iteration cap short of its tolerance, more than %g %%: marched again at Courant number "
-                       "%g (`Pilot stage/Field time step halvings')\n",
+                       "step's iteration cap short of its tolerance (held by %s), more than %g %%: marched again at "
+                       "Courant number %g (`Pilot stage/Field time step halvings')\n",
                        where.c_str(), rejected.unconverged_steps, rejected.averaged_steps, rejected.courant_number,
-                       100 * unconverged_steps_limit, rejected.courant_number / 2);
+                       capped_steps_held_by(rejected).c_str(), 100 * unconverged_steps_limit, rejected.courant_number / 2);
         });
       }
     catch (const std::exception &e) // diverged, or no flow to set a time step by
@@ -249,7 +251,8 @@ namespace servodrift::flow
     if (!steps_converged(a))
       {
         std::cerr << "servodrift: warning: " << where << ": " << a.unconverged_steps << " of its " << a.averaged_steps
-                  << " averaged time steps stopped at the step's iteration cap short of its tolerance, more than "
+                  << " averaged time steps stopped at the step's iteration cap short of its tolerance (held by "
+                  << capped_steps_held_by(a) << "), more than "
                   << format_number(100 * unconverged_steps_limit) << " % at Courant number "
                   << format_number(a.courant_number) << " (after " << a.courant_halvings
                   << " halvings): the mean is not that of the marched equations (more `Pilot stage/Field time step "
@@ -259,7 +262,8 @@ namespace servodrift::flow
     if (a.unconverged_steps > 0)
       std::cerr << "servodrift: note: " << where << ": " << a.unconverged_steps << " of its " << a.averaged_steps
                 << " averaged time steps stopped at the step's iteration cap (`Pilot stage/Field time step "
-                   "iterations') short of its tolerance\n";
+                   "iterations') short of its tolerance (held by "
+                << capped_steps_held_by(a) << ")\n";
     if (!window_spans_motion(a))
       {
         std::cerr << "servodrift: warning: " << where << ": its " << a.averaged_steps

@@ -111,6 +111,20 @@ namespace servodrift::flow
     return a.unconverged_steps <= unconverged_steps_limit * a.averaged_steps;
   }
 
+  std::string capped_steps_held_by(const TimeAverage &a)
+  {
+    std::array<unsigned int, 5> order{0, 1, 2, 3, 4};
+    std::stable_sort(order.begin(), order.end(), [&](unsigned int i, unsigned int j) {
+      return a.unconverged_steps_held_by[i] > a.unconverged_steps_held_by[j];
+    });
+    std::string list;
+    for (unsigned int i : order)
+      if (a.unconverged_steps_held_by[i] > 0)
+        list += (list.empty() ? "" : ", ") + std::string(residual_names[i]) + " in " +
+                std::to_string(a.unconverged_steps_held_by[i]);
+    return list;
+  }
+
   AveragingPlan::AveragingPlan(unsigned int first, double averaged_fraction, unsigned int most, double limit_)
     : transient_steps(first - std::max(2u, std::min(first, static_cast<unsigned int>(std::lround(averaged_fraction * first)))))
     , planned_steps(first)
@@ -180,7 +194,8 @@ namespace servodrift::flow
             each_step(step + 1, plan.planned(), (step + 1) * a.time_step, r);
           if (!plan.averages(step))
             continue;
-          a.unconverged_steps += !r.step_converged;
+          if (!r.step_converged)
+            ++a.unconverged_steps, ++a.unconverged_steps_held_by[largest_residual_index(r.step_residuals)];
           Q.add(r.flow_rate), C_d.add(r.discharge_coefficient), Re.add(r.reynolds_number);
           force.add(r.flapper_force), land.add(r.land_force), jet.add(r.jet_force), bore.add(r.bore_pressure);
           C_d_series.push_back(r.discharge_coefficient), force_series.push_back(r.flapper_force);

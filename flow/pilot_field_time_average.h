@@ -9,8 +9,10 @@
 #include "common/parameters/pilot_stage.h"
 #include "flow/pilot_field.h"
 
+#include <array>
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace servodrift::flow
@@ -40,6 +42,9 @@ namespace servodrift::flow
     /// many say the step's equations are not solved (a step too long for the flow, or, as in the
     /// Launder-Sharma orifice's far stalls, a motion whose steps cap at any step length).
     unsigned int unconverged_steps = 0;
+    /// Of those, how many each scaled residual held (the largest at the cap), in the order of
+    /// residual_names: which equation a capped motion does not solve.
+    std::array<unsigned int, 5> unconverged_steps_held_by{};
     /// The marches before this one whose steps the cap stopped too often (steps_converged), each
     /// followed by one at half the Courant number (`Field time step halvings').
     unsigned int courant_halvings = 0;
@@ -68,6 +73,9 @@ namespace servodrift::flow
   /// Whether the average's steps solved their equations: at most unconverged_steps_limit of its
   /// averaged steps stopped by the cap.
   bool steps_converged(const TimeAverage &a);
+  /// Which residuals held its capped steps, for a message: "continuity in 140, k in 17" (largest
+  /// count first; empty if none capped).
+  std::string capped_steps_held_by(const TimeAverage &a);
 
   /// The lag (in values) at which the sample autocorrelation of a series first falls to zero or
   /// below: a quarter of the period of a cycle, a few correlation times of noise, about a third of

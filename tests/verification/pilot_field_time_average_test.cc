@@ -174,6 +174,12 @@ namespace servodrift::flow
           {
             EXPECT_FALSE(steps_converged(a));
             EXPECT_EQ(a.averaged_steps, 50u);
+            // each capped step counted once, by the residual that held it
+            unsigned int held = 0;
+            for (unsigned int n : a.unconverged_steps_held_by)
+              held += n;
+            EXPECT_EQ(held, a.unconverged_steps);
+            std::printf("capped steps held by %s\n", capped_steps_held_by(a).c_str());
           }
       }
   }

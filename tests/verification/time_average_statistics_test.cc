@@ -313,4 +313,18 @@ namespace servodrift::flow
     EXPECT_TRUE(pinned.lengthen(2 * limit));
     EXPECT_EQ(pinned.planned(), 200u + 880u); // 1.1 x 2^2 x 200 averaged
   }
+
+  // The residual that holds a capped step: the largest of the five (ties to the first), and the list
+  // for a message with the largest count first, none that held no step.
+  TEST(PilotFieldTimeAverage, CappedStepsAreListedByTheResidualThatHeldThem)
+  {
+    EXPECT_EQ(largest_residual_index(Residuals{1e-3, 2e-3, 5e-4, 0, 0}), 1u);
+    EXPECT_EQ(largest_residual_index(Residuals{1e-5, 1e-5, 3e-3, 2e-3, 1e-4}), 2u);
+    EXPECT_EQ(largest_residual_index(Residuals{1e-5, 1e-5, 3e-4, 2e-3, 4e-3}), 4u);
+    EXPECT_EQ(largest_residual_index(Residuals{}), 0u);
+    TimeAverage a;
+    EXPECT_EQ(capped_steps_held_by(a), "");
+    a.unconverged_steps_held_by = {0, 2, 140, 17, 0};
+    EXPECT_EQ(capped_steps_held_by(a), "continuity in 140, k in 17, v in 2");
+  }
 } // namespace servodrift::flow
