@@ -16,6 +16,7 @@ namespace servodrift::flow
     : gamma(mesh_.n_cells(), 1.0)
     , cavitating(mesh_.n_cells(), 0)
     , mixture_flux(mesh_.n_faces(), 0.0)
+    , entered(mesh_.n_cells(), 0)
     , mesh(mesh_)
     , vapour_ratio(vapour_density_ratio)
     , floor(std::numeric_limits<double>::lowest())
@@ -63,11 +64,12 @@ namespace servodrift::flow
           if (out <= vanishing * (in + 1))
             continue; // stagnant: keep
           const double mixture = in / out;
-          if (mixture >= 1)
+          if (mixture >= 1 && !(transient && entered[c]))
             cavitating[c] = 0, gamma[c] = 1;
           else
-            gamma[c] = std::max(0.0, (mixture - vapour_ratio) / (1 - vapour_ratio));
+            gamma[c] = std::clamp((mixture - vapour_ratio) / (1 - vapour_ratio), 0.0, 1.0);
         }
+    std::fill(entered.begin(), entered.end(), 0);
   }
 
   std::size_t CavitationModel::n_cavitating() const

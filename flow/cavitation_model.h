@@ -57,14 +57,19 @@ namespace servodrift::flow
 
     /// The liquid fraction of the cavitating cells from their mixture mass balance with the new
     /// fluxes; a cell whose inflow would need gamma >= 1 is liquid again. With a time step (`time'
-    /// set) the balance holds the change of the cell's mass as well, rho V dm/dt.
+    /// set) the balance holds the change of the cell's mass as well, rho V dm/dt, and a cell that the
+    /// last pressure correction made cavitate stays so for this iteration (`entered').
     void update_liquid_fraction(const std::vector<double> &flux, const TimeLevel *time = nullptr, double density = 0);
     /// A cell's new pressure: a cavitating cell holds p_cav, and a liquid one that would be stretched
     /// below it cavitates.
     void set_cell_pressure(std::vector<double> &p, std::size_t cell, double pressure)
     {
       if (on && (cavitating[cell] || pressure < floor))
-        p[cell] = floor, cavitating[cell] = 1;
+        {
+          if (!cavitating[cell])
+            entered[cell] = 1;
+          p[cell] = floor, cavitating[cell] = 1;
+        }
       else
         p[cell] = pressure;
     }
@@ -76,6 +81,14 @@ namespace servodrift::flow
     std::vector<double> mixture_flux; ///< m F per face [kg/s per radian]
 
   private:
+    /// Cells that the last pressure correction made cavitate (set_cell_pressure), until the next
+    /// update_liquid_fraction: their fluxes were corrected as a liquid cell's, so they balance to
+    /// round-off, and `in >= out' would return the cell to the liquid at p_cav with the correction
+    /// that stretched it lost. Such a cell lay on p_cav every iteration with the same imbalance: the
+    /// capped steps of the hot cavitating orifice (doc/validation.md, "Robustness"). Time steps only:
+    /// without the storage term a steady iteration's liquid fraction follows the unconverged fluxes
+    /// of that next iteration, and Launder-Sharma's steady orifice at 20.6 MPa diverged with it.
+    std::vector<char> entered;
     const FvMesh &mesh;
     double vapour_ratio;
     bool on = false;
