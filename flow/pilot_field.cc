@@ -231,8 +231,9 @@ namespace servodrift::flow
     }
 
     /// What the current fields give at pressure difference dp (model.md 4.2): Q, C_d, Re, the
-    /// forces and the diagnostics; the iteration counts are the caller's.
-    PilotFieldResult result_of(double dp) const;
+    /// forces and the diagnostics, Q through the patch `metered'; the iteration counts are the
+    /// caller's.
+    PilotFieldResult result_of(double dp, MeteredAt metered) const;
 
     /// A case at rest on a fine mesh: the case solved on the mesh of half the resolution, carried
     /// over. Returns false (and leaves the fields at rest) if that solve fails; the caller then
@@ -378,7 +379,7 @@ namespace servodrift::flow
                          format_number(d.valve.pilot.field_turbulent_viscosity_limit) + " Re mu) in " +
                          std::to_string(report.cells_at_viscosity_limit) +
                          " cells: not the model's solution; raise `Pilot stage/Field turbulent viscosity limit'");
-    const PilotFieldResult fields = d.result_of(dp);
+    const PilotFieldResult fields = d.result_of(dp, MeteredAt::outlet);
     const unsigned int iterations = r.iterations, coarse = r.coarse_mesh_iterations;
     const double relaxation = r.pressure_relaxation;
     r = fields;
@@ -386,10 +387,10 @@ namespace servodrift::flow
     return r;
   }
 
-  PilotFieldResult PilotField::Implementation::result_of(double dp) const
+  PilotFieldResult PilotField::Implementation::result_of(double dp, MeteredAt metered) const
   {
     return extract_pilot_result(solver, mesh, {kind, gap, bore_radius, exit_faces}, conditions,
-                                valve.fluid.vapour_pressure, downstream_pressure(dp), dp);
+                                valve.fluid.vapour_pressure, downstream_pressure(dp), dp, metered);
   }
 
   PilotFieldResult PilotField::advance(double dp, double dt, unsigned int max_iterations, double tolerance)
@@ -400,7 +401,7 @@ namespace servodrift::flow
     if (d.prepared_level != dp || d.solver.boundary_pressure("inlet") != dp)
       d.prepare_level(d.solver, dp, d.valve.pilot.field_cavitation);
     const SolveReport step = d.solver.advance(dt, max_iterations, tolerance);
-    PilotFieldResult r = d.result_of(dp);
+    PilotFieldResult r = d.result_of(dp, MeteredAt::inlet);
     r.iterations = step.iterations;
     r.pressure_relaxation = step.pressure_relaxation;
     r.step_converged = step.converged;

@@ -32,7 +32,9 @@ namespace servodrift::flow
   struct PilotFieldResult
   {
     double pressure_difference = 0;   ///< upstream stagnation minus downstream static [Pa]
-    double flow_rate = 0;             ///< Q through the outlet [m^3/s]
+    /// Q [m^3/s] through the outlet (solve) or the inlet (advance: a time step's outlet flow carries
+    /// the rate the vapour's volume changes at; flow/pilot_field_extraction.h)
+    double flow_rate = 0;
     double discharge_coefficient = 0; ///< [1]
     double reynolds_number = 0;       ///< E17 (orifice) or E18 (nozzle) [1]
     double flapper_force = 0;         ///< nozzle: int (p - p_r) dA over the flapper, towards it [N]

@@ -12,14 +12,15 @@ namespace servodrift::flow
 
   PilotFieldResult extract_pilot_result(const SimplecSolver &solver, const FvMesh &mesh, const PilotCaseShape &shape,
                                         const PilotFieldCase &conditions, double vapour_pressure,
-                                        double downstream, double dp)
+                                        double downstream, double dp, MeteredAt metered)
   {
     PilotFieldResult r;
     const double rho = conditions.fluid.density, mu = conditions.fluid.viscosity;
     const double v_ideal = ideal_velocity(dp, rho);
     r.pressure_difference = dp;
     r.turbulence = conditions.turbulence;
-    r.flow_rate = solver.flow_rate("outlet");
+    // (a patch's flow rate is out of the domain: the inlet's is negative)
+    r.flow_rate = metered == MeteredAt::outlet ? solver.flow_rate("outlet") : -solver.flow_rate("inlet");
     r.minimum_pressure = solver.minimum_pressure();
     r.minimum_absolute_pressure = downstream + r.minimum_pressure;
     const auto gamma = solver.liquid_fraction();

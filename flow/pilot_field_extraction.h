@@ -19,12 +19,22 @@ namespace servodrift::flow
     const std::vector<unsigned int> &exit_faces; ///< nozzle: interior faces of the bore's exit section
   };
 
+  /// Where a case's Q (and its C_d, and the nozzle's Re) is metered. In a steady state the inlet and
+  /// the outlet pass the same flow; in a time step they differ by the rate the vapour's volume
+  /// changes at, which a cavity downstream of the restriction carries to the outlet only: the
+  /// inlet's is the flow the restriction draws, choked and steady where the cavity is not.
+  enum class MeteredAt
+  {
+    outlet, ///< a steady state: the flow its convergence monitor follows
+    inlet   ///< a time step (PilotField::advance)
+  };
+
   /// What the solver's fields give at pressure difference dp, with the outlet's absolute pressure
-  /// `downstream' [Pa]: Q from the outlet; C_d on the bore area (orifice, Re by E17) or the curtain
+  /// `downstream' [Pa]: Q through the patch `metered'; C_d on the bore area (orifice, Re by E17) or the curtain
   /// pi D_N h (nozzle, Re by E18); the flapper's and the land's pressure forces, the bore exit's
   /// mean pressure and axial momentum; the lowest absolute pressure, whether the case cavitates,
   /// the largest wall y+ and mu_t/mu. The iteration counts are the caller's.
   PilotFieldResult extract_pilot_result(const SimplecSolver &solver, const FvMesh &mesh, const PilotCaseShape &shape,
                                         const PilotFieldCase &conditions, double vapour_pressure,
-                                        double downstream, double dp);
+                                        double downstream, double dp, MeteredAt metered);
 } // namespace servodrift::flow

@@ -15,11 +15,17 @@
 //   the iterations recorded. With an uncertainty limit of 0 the same average is recorded but not used.
 // - An average whose steps the iteration cap stops too often is not lengthened; it is marched again
 //   at half the Courant number.
+// - In a time step the case's Q is the inlet's: it and the outlet's differ by the rate the mixture's
+//   mass in the domain changes at, the identity a long average's two means meet by (checked with the
+//   solver's BDF2 derivative on a nozzle whose cavity grows after a rise of its pressure level).
 // The statistics of a time average (batch means, the span of the motion, the plan that lengthens
 // it) are verified on series with known answers in time_average_statistics_test.cc.
 #include "common/table.h"
+#include "common/units.h"
+#include "flow/fv_mesh.h"
 #include "flow/pilot_field_cases.h"
 #include "flow/pilot_field_time_average.h"
+#include "flow/simplec.h"
 #include "tests/verification/flow_test_domains.h"
 #include "tests/support/test_support.h"
 
@@ -83,6 +89,65 @@ namespace servodrift::flow
     std::printf("mean fields against the last step's: p %.2e dp, |u| %.2e v_ideal at most\n", p_difference, u_difference);
     EXPECT_LT(p_difference, 1e-4);
     EXPECT_LT(u_difference, 1e-4);
+  }
+
+  TEST(PilotFieldTimeAverage, ATimeStepMetersTheInletWhoseFlowTheCavitysGrowthDoesNotCarry)
+  {
+    // RV-1's null at 40 degC, resolution 0.5, solved cavitating at 10.4 MPa and marched at 15 MPa:
+    // the cavity grows over the steps, and the outlet passes the vapour's displacement on top of
+    // the inlet's flow. The solver's BDF2 steps (the first implicit Euler) conserve the mixture's
+    // mass M = 2 pi rho sum_c (gamma + (1 - gamma) r) V_c, but for what the floor gamma = 0 adds:
+    // a pure vapour cell that sends more than it receives is held at r (doc/method.md,
+    // "Cavitation"), at most r times its outflow. Summed from the third step, in minus out must equal
+    // ((3 M_N - M_N-1) - (3 M_2 - M_1)) / 2 within that floor's sum and what each step leaves
+    // unconverged (its continuity, 1e-4 of the throughput); the mass change must be more than 10 %
+    // of a step's throughput, or the test would not see the outlet's share.
+    ValveDescription v = test::valve({"Pilot stage/Field mesh resolution=0.5"});
+    PilotFieldCase c = pilot_field_case(v, 40);
+    c.turbulence = FlowSolverParameters::Turbulence::k_epsilon;
+    PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, 40e-6);
+    ASSERT_TRUE(nozzle.solve(10.4e6).cavitating);
+    const double dp = 15e6, dt = nozzle.courant_time_step(1), r_v = v.flow_solver.vapour_density_ratio;
+    const FvMesh &mesh = nozzle.mesh();
+    auto mixture_mass = [&](const FlowFields &f) {
+      double m = 0;
+      for (std::size_t cell = 0; cell < mesh.n_cells(); ++cell)
+        m += (f.liquid_fraction[cell] + (1 - f.liquid_fraction[cell]) * r_v) * mesh.cell_volume[cell];
+      return 2 * units::pi * c.fluid.density * m;
+    };
+    auto vapour_floor_outflow = [&](const FlowFields &f) { // [kg/s]: r times the pure vapour cells' outflow
+      double out = 0;
+      for (std::size_t cell = 0; cell < mesh.n_cells(); ++cell)
+        if (f.cavitating[cell] && f.liquid_fraction[cell] == 0)
+          for (unsigned int face : mesh.cell_faces[cell])
+            out += std::max(0.0, mesh.owner[face] == cell ? f.flux[face] : -f.flux[face]);
+      return 2 * units::pi * r_v * out;
+    };
+    constexpr unsigned int steps = 40;
+    std::vector<double> mass;
+    double in_minus_out = 0, floor = 0, throughput = 0;
+    for (unsigned int n = 1; n <= steps; ++n)
+      {
+        const PilotFieldResult r = nozzle.advance(dp, dt, v.pilot.field_time_step_iterations, step_tolerance);
+        ASSERT_TRUE(r.step_converged) << "step " << n;
+        EXPECT_DOUBLE_EQ(r.flow_rate, -nozzle.solver().flow_rate("inlet"));
+        const FlowFields f = nozzle.fields();
+        mass.push_back(mixture_mass(f));
+        if (n >= 3)
+          {
+            in_minus_out += c.fluid.density * (r.flow_rate - nozzle.solver().flow_rate("outlet")) * dt;
+            floor += vapour_floor_outflow(f) * dt;
+            throughput += c.fluid.density * r.flow_rate * dt;
+          }
+      }
+    const double change = ((3 * mass[steps - 1] - mass[steps - 2]) - (3 * mass[1] - mass[0])) / 2;
+    std::printf("%u steps of %.3g s at %.3g MPa: mass in minus out %.4e kg, mixture mass change %.4e kg, the vapour "
+                "floor's bound %.4e kg (throughput %.4e kg)\n",
+                steps, dt, dp * 1e-6, in_minus_out, change, floor, throughput);
+    EXPECT_GT(std::abs(change), 0.1 * throughput / (steps - 2));
+    EXPECT_NEAR(in_minus_out, change, floor + step_tolerance * throughput);
+    // what the floor adds is what a long average's inlet and outlet means differ by
+    EXPECT_LT(std::abs(in_minus_out - change), 1e-3 * throughput);
   }
 
   TEST(PilotFieldStage, StalledLaminarCaseIsReportedByItsTimeAverage)
@@ -239,9 +304,12 @@ namespace servodrift::flow
   // (cavitation_model.h), and with a turbulence model k and epsilon or omega their time terms
   // (URANS, flow_time_stepping_test.cc's decay). Laminar, the two-layer k-epsilon and SST. The
   // marched state may move from the steady one by what the two leave unconverged: the cavitating
-  // cells' own mass balance, which the steady convergence test does not include (up to 2.6e-3 of the
-  // throughput on this mesh, doc/method.md), and the fluxes' alpha_u (0.9 steady, 1 in a step). 1e-3
-  // in C_dn and 1 % in force, below this mesh's discretisation error (doc/validation.md). Marched
+  // cells' own mass balance, which the steady convergence test does not include (up to 2.6e-3 of
+  // the throughput on this mesh, doc/method.md; and the steady outlet passes 1.2 % less than the
+  // inlet, laminar and SST), and the fluxes' alpha_u (0.9 steady, 1 in a step). The march meters the
+  // inlet (a time step's Q), so it is compared with the steady inlet's C_dn, within 3e-3, the
+  // cavitating cells' share, and the force within 1 %, below this mesh's discretisation error
+  // (doc/validation.md). Marched
   // longer, the laminar cavity moves further (C_dn +0.23 % and single steps with the force 25 % up
   // by 1.1 us): doc/validation.md.
   class SteadyCavitatingCase : public ::testing::TestWithParam<FlowSolverParameters::Turbulence>
@@ -258,15 +326,21 @@ namespace servodrift::flow
     PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, 40e-6);
     const PilotFieldResult steady = nozzle.solve(10.4e6);
     ASSERT_TRUE(steady.cavitating);
+    // a time step meters the inlet; the steady state its outlet, which the cavitating cells' mass
+    // balance, not in the steady convergence test, leaves below the inlet (1.2 % laminar and SST,
+    // 0.03 % two-layer k-epsilon here): the march is compared with the steady inlet's C_dn
+    const double inlet_share = -nozzle.solver().flow_rate("inlet") / steady.flow_rate;
+    const double steady_inlet_discharge = inlet_share * steady.discharge_coefficient; // C_d is Q over a fixed flow
     const TimeAverage a = time_average(nozzle, 10.4e6, v.pilot);
-    std::printf("cavitating null, %s: steady C_dn %.6f, F %.6f N; marched: C_dn %+.2e, F %+.2e relative, spreads "
-                "%.2e, %.2e, %u iterations\n",
-                model_name(GetParam()), steady.discharge_coefficient, steady.flapper_force,
-                a.mean.discharge_coefficient / steady.discharge_coefficient - 1, a.mean.flapper_force / steady.flapper_force - 1,
+    std::printf("cavitating null, %s: steady C_dn %.6f (its inlet's %.6f), F %.6f N; marched: C_dn %+.2e, F %+.2e "
+                "relative, spreads %.2e, %.2e, %u iterations\n",
+                model_name(GetParam()), steady.discharge_coefficient, steady_inlet_discharge, steady.flapper_force,
+                a.mean.discharge_coefficient / steady_inlet_discharge - 1, a.mean.flapper_force / steady.flapper_force - 1,
                 a.discharge_coefficient_spread / steady.discharge_coefficient, a.flapper_force_spread / steady.flapper_force,
                 a.mean.iterations);
-    EXPECT_NEAR(a.mean.discharge_coefficient / steady.discharge_coefficient, 1, 1e-3);
+    EXPECT_NEAR(a.mean.discharge_coefficient / steady_inlet_discharge, 1, 3e-3);
     EXPECT_NEAR(a.mean.flapper_force / steady.flapper_force, 1, 1e-2);
+    EXPECT_NEAR(inlet_share, 1, 0.02); // the steady imbalance as measured (2026-11-29), not larger
   }
 
   INSTANTIATE_TEST_SUITE_P(Models, SteadyCavitatingCase,
