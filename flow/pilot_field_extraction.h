@@ -20,9 +20,11 @@ namespace servodrift::flow
   };
 
   /// Where a case's Q (and its C_d, and the nozzle's Re) is metered. In a steady state the inlet and
-  /// the outlet pass the same flow; in a time step they differ by the rate the vapour's volume
-  /// changes at, which a cavity downstream of the restriction carries to the outlet only: the
-  /// inlet's is the flow the restriction draws, choked and steady where the cavity is not.
+  /// the outlet pass the same flow but for the cavitating cells' imbalance, which the steady
+  /// convergence test leaves out (doc/method.md, "Mass balance with cavitation"); in a time step they
+  /// differ by the rate the mixture's mass in the domain changes at, which a cavity downstream of the
+  /// restriction carries to the outlet only: the inlet's is the flow the restriction draws, choked
+  /// and steady where the cavity is not.
   enum class MeteredAt
   {
     outlet, ///< a steady state: the flow its convergence monitor follows

@@ -19,7 +19,8 @@ namespace servodrift::flow
 {
   struct TimeAverage
   {
-    /// Time averages of Q, C_d, Re, the forces and the bore pressure; the lowest absolute pressure,
+    /// Time averages of Q, C_d, Re (a step's: Q metered at the inlet, MeteredAt), the forces and the
+    /// bore pressure; the lowest absolute pressure,
     /// the largest y+ and the cavitation over the averaged time; iterations: every step's.
     PilotFieldResult mean;
     double discharge_coefficient_spread = 0; ///< standard deviation over the averaged time [1]
