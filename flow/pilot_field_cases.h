@@ -139,9 +139,10 @@ namespace servodrift::flow
     /// mean of the two pressure levels (half the step, in the logarithm), or, where there is no
     /// such state at this gap or it is the same pressure level, from rest (solve_from_rest), so that
     /// the retry does not repeat the path that failed. A laminar or k-epsilon case stops there; SST
-    /// and Launder-Sharma go on to solve_from_k_epsilon. If every attempt fails, the stall nearest a
-    /// steady state (smallest largest residual; FailedAttempts) propagates with its fields in `slot',
-    /// for the time average, its message listing the attempts; if none stalled, the last failure
+    /// and Launder-Sharma go on to solve_from_k_epsilon. If every attempt fails, the state nearest a
+    /// steady state (FailedAttempts: a stall at the case's level, k-epsilon's solution that model t
+    /// diverged from, a stall on the way) propagates as a NotConverged with its fields in `slot', for
+    /// the time average, its message listing the attempts; if none left a state, the last failure
     /// propagates. Defined in flow/pilot_field_retry.cc.
     PilotFieldResult solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
                                       bool started_elsewhere);
@@ -155,7 +156,8 @@ namespace servodrift::flow
     /// k-epsilon field. SST's cavitating orifice at 20.6 MPa diverges on its own as the cavity grows
     /// by thousands of cells in a few iterations; from k-epsilon's cavity it converges
     /// (doc/validation.md, "Robustness"). Its iterations include k-epsilon's; a failure of either
-    /// propagates (`slot' stays empty if k-epsilon's failed).
+    /// propagates (`slot' stays empty if k-epsilon's failed; if model t diverged, it holds model t
+    /// set afresh into k-epsilon's solution).
     PilotFieldResult solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
     /// A case whose steady iteration stalled (`why'): its time average into `record'
     /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too or the uncertainty

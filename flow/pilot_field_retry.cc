@@ -26,27 +26,41 @@ namespace servodrift::flow
       }
     catch (const NotConverged &e)
       {
-        const double residual = largest_residual(e.residuals);
         const double level = field.solver().boundary_pressure("inlet");
         const bool on_the_way = level != case_level;
-        list += " stalled at largest residual " + format_number(residual) +
+        list += " stalled at largest residual " + format_number(largest_residual(e.residuals)) +
                 (on_the_way ? " on the way, at " + format_number(level * 1e-6) + " MPa" : "");
-        // the first of equal stalls stands
-        if (!any_stalled() || on_the_way < nearest_on_the_way ||
-            (on_the_way == nearest_on_the_way && residual < largest_residual(nearest_residuals)))
-          {
-            nearest_on_the_way = on_the_way;
-            nearest_residuals = e.residuals;
-            nearest_failure = last_failure;
-            nearest_fields = field.fields();
-            nearest_field = &field;
-            nearest_is_last = true;
-          }
+        consider(on_the_way ? Rank::stall_on_the_way : Rank::stall_at_case_level, e.residuals,
+                 "the stall nearest a steady state", field);
       }
     catch (const std::exception &)
       {
         list += " diverged";
       }
+  }
+
+  void FailedAttempts::add_diverged_start(const std::string &how, const PilotField &field)
+  {
+    last_failure = std::current_exception();
+    ++count;
+    list += (list.empty() ? "" : "; ") + how + " diverged";
+    nearest_is_last = false;
+    consider(Rank::diverged_start, Residuals{}, "its start " + how + ", the state nearest a steady state", field);
+  }
+
+  void FailedAttempts::consider(Rank rank, const Residuals &residuals, const std::string &description,
+                                const PilotField &field)
+  {
+    if (has_state_to_march() && (rank > nearest_rank || (rank == nearest_rank && !(largest_residual(residuals) <
+                                                                                     largest_residual(nearest_residuals)))))
+      return;
+    nearest_rank = rank;
+    nearest_residuals = residuals;
+    nearest_description = description;
+    nearest_failure = last_failure;
+    nearest_fields = field.fields();
+    nearest_field = &field;
+    nearest_is_last = true;
   }
 
   void FailedAttempts::add_without_state(const std::string &how)
@@ -59,7 +73,7 @@ namespace servodrift::flow
 
   bool FailedAttempts::restore_nearest(PilotField &field) const
   {
-    if (!any_stalled() || (nearest_is_last && &field == nearest_field))
+    if (!has_state_to_march() || (nearest_is_last && &field == nearest_field))
       return false;
     field.set_fields(nearest_fields);
     return true;
@@ -67,18 +81,18 @@ namespace servodrift::flow
 
   void FailedAttempts::rethrow() const
   {
-    if (!any_stalled())
+    if (!has_state_to_march())
       std::rethrow_exception(last_failure);
-    if (count < 2)
+    if (count < 2 && nearest_rank != Rank::diverged_start)
       std::rethrow_exception(nearest_failure);
     try
       {
         std::rethrow_exception(nearest_failure);
       }
-    catch (const NotConverged &e)
+    catch (const std::exception &e) // a stall, or the divergence of a start
       {
-        throw NotConverged(std::string(e.what()) + " (the stall nearest a steady state of " + std::to_string(count) +
-                             " attempts: " + list + ")",
+        throw NotConverged(std::string(e.what()) + " (" + nearest_description + " of " + std::to_string(count) +
+                             (count == 1 ? " attempt: " : " attempts: ") + list + ")",
                            nearest_residuals);
       }
   }
@@ -126,7 +140,7 @@ namespace servodrift::flow
             slot = std::move(from_k_epsilon);
             return r;
           }
-        catch (const std::runtime_error &)
+        catch (const NotConverged &)
           {
             if (!from_k_epsilon) // k-epsilon's solve failed: no state of model t
               failed.add_without_state("from k-epsilon's solution");
@@ -137,11 +151,21 @@ namespace servodrift::flow
                 slot = std::move(from_k_epsilon);
               }
           }
+        catch (const std::runtime_error &)
+          {
+            if (!from_k_epsilon)
+              failed.add_without_state("from k-epsilon's solution");
+            else // model t diverged: from_k_epsilon holds k-epsilon's solution again
+              {
+                failed.add_diverged_start("from k-epsilon's solution", *from_k_epsilon);
+                slot = std::move(from_k_epsilon);
+              }
+          }
       }
-    // the nearest stall is marched for the time average; its fields go to the case's VTU (a
+    // the nearest state is marched for the time average; its fields go to the case's VTU (a
     // later attempt, or k-epsilon's on the way to model t, wrote its own there)
     failed.restore_nearest(*slot);
-    if (failed.any_stalled() && !failure_output.empty())
+    if (failed.has_state_to_march() && !failure_output.empty())
       slot->write_vtu(failure_output);
     failed.rethrow();
   }
@@ -177,11 +201,29 @@ namespace servodrift::flow
       k_epsilon->set_fields(*last);
     const PilotFieldResult start = solve_with_retry(k_epsilon, Turbulence::k_epsilon, h, dp, true);
     c.turbulence = t;
-    slot = std::make_unique<PilotField>(valve, kind, c, h);
-    slot->set_failure_output(failure_output);
-    slot->set_fields(k_epsilon->fields());
-    PilotFieldResult r = slot->solve(dp);
-    r.iterations += start.iterations + start.coarse_mesh_iterations;
-    return r;
+    const auto start_model_t = [&] {
+      slot = std::make_unique<PilotField>(valve, kind, c, h);
+      slot->set_failure_output(failure_output);
+      slot->set_fields(k_epsilon->fields());
+    };
+    start_model_t();
+    try
+      {
+        PilotFieldResult r = slot->solve(dp);
+        r.iterations += start.iterations + start.coarse_mesh_iterations;
+        return r;
+      }
+    catch (const NotConverged &)
+      {
+        throw; // the stall is model t's state at the case's level
+      }
+    catch (const std::runtime_error &)
+      {
+        // diverged: model t set afresh into k-epsilon's solution, the state its time average may
+        // march from (at 90 degC, Launder-Sharma's orifice at 15.45 MPa diverges in the steady
+        // iteration from there but settles when marched; bench_orifice_march 90)
+        start_model_t();
+        throw;
+      }
   }
 } // namespace servodrift::flow

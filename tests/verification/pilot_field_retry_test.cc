@@ -1,6 +1,7 @@
 // The bookkeeping of the flow stage's retry ladder (flow/pilot_field_retry.h, FailedAttempts): of
-// the failed attempts at a case, the stall nearest a steady state is the one its time average
-// marches from. Why it matters: Launder-Sharma's orifice at 15.45 MPa and 100 degC, reached down the
+// the failed attempts at a case, the state nearest a steady state is the one its time average
+// marches from: a stall at the case's level, else k-epsilon's solution that SST or Launder-Sharma
+// diverged from, else a stall on the way. Why it matters: Launder-Sharma's orifice at 15.45 MPa and 100 degC, reached down the
 // sweep's path, stalls far from steady (continuity 0.20) and its march caps 240 of 1 000 steps;
 // the same case from a stall near steady (5e-3) averages calmly (doc/changes.md).
 //
@@ -76,6 +77,20 @@ namespace servodrift::flow
       return NotConverged("");
     }
 
+    /// Model t, set into k-epsilon's solution (the state `marker' in `field'), diverges from it.
+    void diverge_from_start(FailedAttempts &attempts, PilotField &field, double marker)
+    {
+      mark(field, marker);
+      try
+        {
+          throw std::runtime_error("diverged");
+        }
+      catch (const std::runtime_error &)
+        {
+          attempts.add_diverged_start("from k-epsilon's solution", field);
+        }
+    }
+
     ValveDescription coarse_valve()
     {
       return test::valve({"Output/Progress=none", "Output/Flow fields=none", "Pilot stage/Field mesh resolution=0.5"});
@@ -96,7 +111,7 @@ namespace servodrift::flow
     fail(attempts, "from k-epsilon's solution", field, 3, std::runtime_error("diverged"));
     fail(attempts, "from rest in smaller steps", field, 4, NotConverged("between", stall_at(0.05)));
     fail(attempts, "from its own state", field, 5, NotConverged("on the way", stall_at(1e-3)), 7.3e6);
-    ASSERT_TRUE(attempts.any_stalled());
+    ASSERT_TRUE(attempts.has_state_to_march());
     EXPECT_TRUE(attempts.restore_nearest(field));
     EXPECT_EQ(marker_of(field), 2);
     const NotConverged e = rethrown_stall(attempts);
@@ -167,7 +182,7 @@ namespace servodrift::flow
       {
         attempts.add_without_state("k-epsilon's solution");
       }
-    EXPECT_FALSE(attempts.any_stalled());
+    EXPECT_FALSE(attempts.has_state_to_march());
     EXPECT_FALSE(attempts.restore_nearest(field));
     EXPECT_EQ(marker_of(field), 1);
     try
@@ -183,5 +198,48 @@ namespace servodrift::flow
       {
         EXPECT_STREQ(e.what(), "k-epsilon failed");
       }
+  }
+
+  // Launder-Sharma's orifice at 90 degC down the sweep's path: its own attempts stall on the way
+  // (at 6.26 MPa, whose march diverged at its first step) and it diverges from k-epsilon's
+  // solution, from which it settles when marched (bench_orifice_march 90). That start is the state
+  // to march, ahead of stalls on the way but behind a stall at the case's level (the model's own
+  // state); thrown as a NotConverged (so that the chain marches it) with zero residuals, since
+  // model t's are not known there, even when it is the only attempt.
+  TEST(PilotFieldRetry, AStartThatDivergedRanksBetweenStallsAtTheCaseLevelAndOnTheWay)
+  {
+    const ValveDescription valve = coarse_valve();
+    PilotField field(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 90), 0);
+    PilotField start(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 90), 0);
+
+    FailedAttempts on_the_way(case_level);
+    fail(on_the_way, "from the chain's last state", field, 1, NotConverged("far", stall_at(0.49)), 6.26e6);
+    fail(on_the_way, "from rest in smaller steps", field, 2, NotConverged("farther", stall_at(1.1)), 7.73e6);
+    diverge_from_start(on_the_way, start, 3);
+    ASSERT_TRUE(on_the_way.has_state_to_march());
+    EXPECT_FALSE(on_the_way.restore_nearest(start)); // the last attempt's, in the field that holds it
+    EXPECT_EQ(marker_of(start), 3);
+    EXPECT_TRUE(on_the_way.restore_nearest(field)); // into another field: set
+    EXPECT_EQ(marker_of(field), 3);
+    EXPECT_EQ(field.solver().boundary_pressure("inlet"), case_level);
+    const NotConverged marched = rethrown_stall(on_the_way);
+    EXPECT_EQ(largest_residual(marched.residuals), 0);
+    EXPECT_STREQ(marched.what(), "diverged (its start from k-epsilon's solution, the state nearest a steady state of 3 "
+                                 "attempts: from the chain's last state stalled at largest residual 0.49 on the way, at "
+                                 "6.26 MPa; from rest in smaller steps stalled at largest residual 1.1 on the way, at "
+                                 "7.73 MPa; from k-epsilon's solution diverged)");
+
+    FailedAttempts at_level(case_level);
+    fail(at_level, "from rest", field, 1, NotConverged("own", stall_at(0.2)));
+    diverge_from_start(at_level, start, 3);
+    EXPECT_TRUE(at_level.restore_nearest(start));
+    EXPECT_EQ(marker_of(start), 1);
+    EXPECT_EQ(rethrown_stall(at_level).residuals.continuity, 0.2);
+
+    FailedAttempts alone(case_level);
+    diverge_from_start(alone, start, 4);
+    const NotConverged only = rethrown_stall(alone);
+    EXPECT_STREQ(only.what(), "diverged (its start from k-epsilon's solution, the state nearest a steady state of 1 "
+                              "attempt: from k-epsilon's solution diverged)");
   }
 } // namespace servodrift::flow
