@@ -301,7 +301,9 @@ TEST(IterationControl, CoupledHoverNearTheToleranceHoldsTheLimiters)
       if (near.limiters_hold_started())
         held_at = it, ++starts;
       if (it < 60)
-        EXPECT_FALSE(near.limiters_held_now()) << it;
+        {
+          EXPECT_FALSE(near.limiters_held_now()) << it;
+        }
     }
   EXPECT_EQ(held_at, 60u);
   EXPECT_EQ(starts, 1u);
