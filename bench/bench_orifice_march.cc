@@ -2,8 +2,7 @@
 // "Robustness"): Launder-Sharma's cavitating orifice at 15.45 MPa, whose chain stalls far on every
 // attempt and whose march from the nearest stall caps a sixth to a quarter of its steps
 // (`bench_cold_start 30', `31'), marched instead from the two-layer k-epsilon's converged solution of
-// the same case (k-epsilon's own chain: 1.03 MPa from rest, then 15.45 MPa; the chain marches that
-// start since 90fa49b, from the k-epsilon solution its own path reaches), as the chain's time
+// the same case (k-epsilon's own chain: 1.03 MPa from rest, then 15.45 MPa), as the chain's time
 // average would march it (flow/pilot_field_time_average.h: its plan, gate and statistics). Prints
 // the k-epsilon solution, every capped step (C_d, its continuity, the cavitating cells and how many
 // changed state within it, and the liquid cell of largest mass imbalance by the solver's own

@@ -140,8 +140,8 @@ namespace servodrift::flow
     /// such state at this gap or it is the same pressure level, from rest (solve_from_rest), so that
     /// the retry does not repeat the path that failed. A laminar or k-epsilon case stops there; SST
     /// and Launder-Sharma go on to solve_from_k_epsilon. If every attempt fails, the state nearest a
-    /// steady state (FailedAttempts: k-epsilon's solution that model t failed from, a stall at the
-    /// case's level, a stall on the way) propagates as a NotConverged with its fields in `slot', for
+    /// steady state (FailedAttempts: a stall at the case's level, k-epsilon's solution that model t
+    /// diverged from, a stall on the way) propagates as a NotConverged with its fields in `slot', for
     /// the time average, its message listing the attempts; if none left a state, the last failure
     /// propagates. Defined in flow/pilot_field_retry.cc.
     PilotFieldResult solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
@@ -156,8 +156,8 @@ namespace servodrift::flow
     /// k-epsilon field. SST's cavitating orifice at 20.6 MPa diverges on its own as the cavity grows
     /// by thousands of cells in a few iterations; from k-epsilon's cavity it converges
     /// (doc/validation.md, "Robustness"). Its iterations include k-epsilon's; a failure of either
-    /// propagates (`slot' stays empty if k-epsilon's failed; if model t's, it holds model t set
-    /// afresh into k-epsilon's solution).
+    /// propagates (`slot' stays empty if k-epsilon's failed; if model t diverged, it holds model t
+    /// set afresh into k-epsilon's solution).
     PilotFieldResult solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
     /// A case whose steady iteration stalled (`why'): its time average into `record'
     /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too or the uncertainty

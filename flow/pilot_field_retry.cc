@@ -39,10 +39,13 @@ namespace servodrift::flow
       }
   }
 
-  void FailedAttempts::add_start(const std::string &how, const PilotField &field)
+  void FailedAttempts::add_diverged_start(const std::string &how, const PilotField &field)
   {
-    add(how, field); // listed with its outcome
-    consider(Rank::start, Residuals{}, "its start " + how + " is the state to march;", field);
+    last_failure = std::current_exception();
+    ++count;
+    list += (list.empty() ? "" : "; ") + how + " diverged";
+    nearest_is_last = false;
+    consider(Rank::diverged_start, Residuals{}, "its start " + how + ", the state nearest a steady state", field);
   }
 
   void FailedAttempts::consider(Rank rank, const Residuals &residuals, const std::string &description,
@@ -80,13 +83,13 @@ namespace servodrift::flow
   {
     if (!has_state_to_march())
       std::rethrow_exception(last_failure);
-    if (count < 2 && nearest_rank != Rank::start)
+    if (count < 2 && nearest_rank != Rank::diverged_start)
       std::rethrow_exception(nearest_failure);
     try
       {
         std::rethrow_exception(nearest_failure);
       }
-    catch (const std::exception &e) // a stall, or the failure of a start
+    catch (const std::exception &e) // a stall, or the divergence of a start
       {
         throw NotConverged(std::string(e.what()) + " (" + nearest_description + " of " + std::to_string(count) +
                              (count == 1 ? " attempt: " : " attempts: ") + list + ")",
@@ -137,14 +140,24 @@ namespace servodrift::flow
             slot = std::move(from_k_epsilon);
             return r;
           }
-        catch (const std::runtime_error &)
+        catch (const NotConverged &)
           {
             if (!from_k_epsilon) // k-epsilon's solve failed: no state of model t
               failed.add_without_state("from k-epsilon's solution");
-            else // model t stalled or diverged: from_k_epsilon holds k-epsilon's solution again
+            else
               {
-                failed.add_start("from k-epsilon's solution", *from_k_epsilon);
+                failed.add("from k-epsilon's solution", *from_k_epsilon);
                 // the slot holds the last attempt's state, so that restore_nearest knows when it is the nearest
+                slot = std::move(from_k_epsilon);
+              }
+          }
+        catch (const std::runtime_error &)
+          {
+            if (!from_k_epsilon)
+              failed.add_without_state("from k-epsilon's solution");
+            else // model t diverged: from_k_epsilon holds k-epsilon's solution again
+              {
+                failed.add_diverged_start("from k-epsilon's solution", *from_k_epsilon);
                 slot = std::move(from_k_epsilon);
               }
           }
@@ -200,11 +213,15 @@ namespace servodrift::flow
         r.iterations += start.iterations + start.coarse_mesh_iterations;
         return r;
       }
+    catch (const NotConverged &)
+      {
+        throw; // the stall is model t's state at the case's level
+      }
     catch (const std::runtime_error &)
       {
-        // model t set afresh into k-epsilon's solution, the state its time average marches from
-        // (FailedAttempts: from its stall, a hot Launder-Sharma orifice marched 3 % away; from
-        // this start it settled)
+        // diverged: model t set afresh into k-epsilon's solution, the state its time average may
+        // march from (at 90 degC, Launder-Sharma's orifice at 15.45 MPa diverges in the steady
+        // iteration from there but settles when marched; bench_orifice_march 90)
         start_model_t();
         throw;
       }

@@ -11,17 +11,19 @@ namespace servodrift::flow
 {
   class PilotField;
 
-  /// The attempts of one case that failed, in order, and the state its time average marches from.
-  /// Ranked: first the start of SST or Launder-Sharma from k-epsilon's converged solution of the case
-  /// (the ladder's last rung), whether the model then stalled or diverged: a steady state at the
-  /// case's pressure level, from which the march of the hot Launder-Sharma orifice at 15.45 MPa
-  /// settled (spread below 1e-5) at 90 and 100 degC, where from its far stall (continuity 0.20) it
-  /// moved 3 % below, and from its stall on the way it diverged (bench_orifice_march, bench_cold_start
-  /// 30, 31). Then a stall (NotConverged) at the case's pressure level, the model's own state; then a
-  /// stall on the way (an intermediate level of the continuation, whose residuals are another
-  /// problem's); among stalls of one rank, the smallest largest scaled residual, since a far stall
-  /// can march into another motion whose steps stop at their cap while a near one averages calmly
-  /// (that orifice at 100 degC: continuity 0.20 against 5e-3; doc/changes.md, twenty-second look).
+  /// The attempts of one case that failed, in order, and the state its time average marches from:
+  /// the one nearest the case's steady state. Ranked: a stall (NotConverged) at the case's pressure
+  /// level, the model's own state; then the start of an attempt that diverged from another model's
+  /// solution at that level (k-epsilon's, from which SST or Launder-Sharma started); then a stall on
+  /// the way (an intermediate level of the continuation, whose residuals are another problem's);
+  /// among stalls of one rank, the smallest largest scaled residual. Why: a far stall can march into
+  /// another motion whose steps stop at their iteration cap while a near one of the same case
+  /// averages calmly (Launder-Sharma's orifice at 15.45 MPa and 100 degC: continuity 0.20 against
+  /// 5e-3; doc/changes.md, twenty-second look); at 90 degC, marched from its stall on the way at
+  /// 6.26 MPa, it diverged at its first step, from k-epsilon's solution it settles
+  /// (bench_orifice_march 90). k-epsilon's solution does not outrank a stall at the case's level:
+  /// SST's nozzle at 40 um, 3.09 MPa and 120 degC, marched from it, still drifts after 9 000 steps
+  /// (flagged 2), from its own stall (continuity 0.037) it averages (doc/changes.md, twenty-sixth look).
   class FailedAttempts
   {
   public:
@@ -31,15 +33,15 @@ namespace servodrift::flow
     {}
     /// Call in the catch block of attempt `how' (`from rest', ...), whose state is in `field'.
     void add(const std::string &how, const PilotField &field);
-    /// Call in the catch block of attempt `how' (`from k-epsilon's solution') that stalled or
-    /// diverged from `field''s state, another model's steady solution at the case's pressure level,
-    /// into which the model's own (a new PilotField) was set again: the state to march.
-    void add_start(const std::string &how, const PilotField &field);
+    /// Call in the catch block of attempt `how' (`from k-epsilon's solution') that diverged from
+    /// `field''s state, another model's steady solution at the case's pressure level, into which
+    /// the model's own (a new PilotField) was set: a state to march from if no stall is at that level.
+    void add_diverged_start(const std::string &how, const PilotField &field);
     /// Call in the catch block of a step that leaves no state of the case's model (the two-layer
     /// k-epsilon solve that starts another model): listed, never marched.
     void add_without_state(const std::string &how);
 
-    /// Whether an attempt left a state to march from (a start, or a stall).
+    /// Whether an attempt left a state to march from (a stall, or a start that diverged).
     bool has_state_to_march() const { return nearest_failure != nullptr; }
     /// Sets the nearest state's fields into `field' (of the case's model and mesh) unless `field'
     /// holds them already; true if it set them.
@@ -53,8 +55,8 @@ namespace servodrift::flow
     /// How near the case's steady state an attempt's state is, nearest first.
     enum class Rank
     {
-      start, ///< another model's solution at the case's level
       stall_at_case_level,
+      diverged_start, ///< another model's solution at the case's level
       stall_on_the_way
     };
     /// Keeps `field''s state if it is nearer than the nearest so far (the first of equal ones stands).

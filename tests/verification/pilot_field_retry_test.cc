@@ -1,7 +1,7 @@
 // The bookkeeping of the flow stage's retry ladder (flow/pilot_field_retry.h, FailedAttempts): of
-// the failed attempts at a case, the state its time average marches from: k-epsilon's solution that
-// SST or Launder-Sharma failed from, else the stall nearest a steady state (at the case's level
-// before one on the way). Why it matters: Launder-Sharma's orifice at 15.45 MPa and 100 degC, reached down the
+// the failed attempts at a case, the state nearest a steady state is the one its time average
+// marches from: a stall at the case's level, else k-epsilon's solution that SST or Launder-Sharma
+// diverged from, else a stall on the way. Why it matters: Launder-Sharma's orifice at 15.45 MPa and 100 degC, reached down the
 // sweep's path, stalls far from steady (continuity 0.20) and its march caps 240 of 1 000 steps;
 // the same case from a stall near steady (5e-3) averages calmly (doc/changes.md).
 //
@@ -77,19 +77,17 @@ namespace servodrift::flow
       return NotConverged("");
     }
 
-    /// Model t, set into k-epsilon's solution (the state `marker' in `field'), fails from it with
-    /// `failure'.
-    template <class Failure>
-    void fail_from_start(FailedAttempts &attempts, PilotField &field, double marker, const Failure &failure)
+    /// Model t, set into k-epsilon's solution (the state `marker' in `field'), diverges from it.
+    void diverge_from_start(FailedAttempts &attempts, PilotField &field, double marker)
     {
       mark(field, marker);
       try
         {
-          throw failure;
+          throw std::runtime_error("diverged");
         }
       catch (const std::runtime_error &)
         {
-          attempts.add_start("from k-epsilon's solution", field);
+          attempts.add_diverged_start("from k-epsilon's solution", field);
         }
     }
 
@@ -110,7 +108,7 @@ namespace servodrift::flow
     FailedAttempts attempts(case_level);
     fail(attempts, "from the chain's last state", field, 1, NotConverged("far", stall_at(0.2)));
     fail(attempts, "from rest", field, 2, NotConverged("near", stall_at(5e-3)));
-    fail(attempts, "through the mean pressure level", field, 3, std::runtime_error("diverged"));
+    fail(attempts, "from k-epsilon's solution", field, 3, std::runtime_error("diverged"));
     fail(attempts, "from rest in smaller steps", field, 4, NotConverged("between", stall_at(0.05)));
     fail(attempts, "from its own state", field, 5, NotConverged("on the way", stall_at(1e-3)), 7.3e6);
     ASSERT_TRUE(attempts.has_state_to_march());
@@ -121,7 +119,7 @@ namespace servodrift::flow
     EXPECT_EQ(e.residuals.continuity, 5e-3);
     EXPECT_EQ(what.rfind("near (the stall nearest a steady state of 5 attempts: ", 0), 0u) << what;
     EXPECT_NE(what.find("from the chain's last state stalled at largest residual 0.2; from rest stalled at largest "
-                        "residual 0.005; through the mean pressure level diverged; from rest in smaller steps stalled at "
+                        "residual 0.005; from k-epsilon's solution diverged; from rest in smaller steps stalled at "
                         "largest residual 0.05; from its own state stalled at largest residual 0.001 on the way, at "
                         "7.3 MPa)"),
               std::string::npos)
@@ -154,7 +152,7 @@ namespace servodrift::flow
     FailedAttempts three(case_level);
     fail(three, "from rest", field, 1, NotConverged("near", stall_at(5e-3)));
     fail(three, "from rest in smaller steps", field, 2, NotConverged("far", stall_at(0.2)));
-    fail(three, "from rest in another field", other, 3, NotConverged("farther", stall_at(0.3)));
+    fail(three, "from k-epsilon's solution", other, 3, NotConverged("farther", stall_at(0.3)));
     EXPECT_TRUE(three.restore_nearest(other));
     EXPECT_EQ(marker_of(other), 1);
 
@@ -162,7 +160,7 @@ namespace servodrift::flow
     FailedAttempts on_the_way(case_level);
     fail(on_the_way, "from the chain's last state", field, 1, NotConverged("farther", stall_at(0.3)), 5.15e6);
     fail(on_the_way, "from rest", field, 2, NotConverged("far", stall_at(0.1)), 10.3e6);
-    fail(on_the_way, "from rest in smaller steps", other, 3, std::runtime_error("diverged"));
+    fail(on_the_way, "from k-epsilon's solution", other, 3, std::runtime_error("diverged"));
     EXPECT_TRUE(on_the_way.restore_nearest(other));
     EXPECT_EQ(marker_of(other), 2);
     EXPECT_EQ(other.solver().boundary_pressure("inlet"), 10.3e6);
@@ -202,14 +200,13 @@ namespace servodrift::flow
       }
   }
 
-  // k-epsilon's converged solution of the case, from which Launder-Sharma or SST failed (the
-  // ladder's last rung), is the state to march, before any stall: the hot Launder-Sharma orifice at
-  // 15.45 MPa diverges from it at 90 degC (its other attempts stall on the way) and stalls from it
-  // at 100 degC (continuity 0.20), and marched from it settles at both, while the march from the
-  // stall on the way diverged and from the far stall moved 3 % below (bench_cold_start 29-31,
-  // bench_orifice_march). Thrown as a NotConverged (so that the chain marches it) with zero
-  // residuals, since the model's own are not known there, even when it is the only attempt.
-  TEST(PilotFieldRetry, KEpsilonsSolutionThatTheModelFailedFromIsTheStateToMarch)
+  // Launder-Sharma's orifice at 90 degC down the sweep's path: its own attempts stall on the way
+  // (at 6.26 MPa, whose march diverged at its first step) and it diverges from k-epsilon's
+  // solution, from which it settles when marched (bench_orifice_march 90). That start is the state
+  // to march, ahead of stalls on the way but behind a stall at the case's level (the model's own
+  // state); thrown as a NotConverged (so that the chain marches it) with zero residuals, since
+  // model t's are not known there, even when it is the only attempt.
+  TEST(PilotFieldRetry, AStartThatDivergedRanksBetweenStallsAtTheCaseLevelAndOnTheWay)
   {
     const ValveDescription valve = coarse_valve();
     PilotField field(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 90), 0);
@@ -218,7 +215,7 @@ namespace servodrift::flow
     FailedAttempts on_the_way(case_level);
     fail(on_the_way, "from the chain's last state", field, 1, NotConverged("far", stall_at(0.49)), 6.26e6);
     fail(on_the_way, "from rest in smaller steps", field, 2, NotConverged("farther", stall_at(1.1)), 7.73e6);
-    fail_from_start(on_the_way, start, 3, std::runtime_error("diverged"));
+    diverge_from_start(on_the_way, start, 3);
     ASSERT_TRUE(on_the_way.has_state_to_march());
     EXPECT_FALSE(on_the_way.restore_nearest(start)); // the last attempt's, in the field that holds it
     EXPECT_EQ(marker_of(start), 3);
@@ -227,26 +224,22 @@ namespace servodrift::flow
     EXPECT_EQ(field.solver().boundary_pressure("inlet"), case_level);
     const NotConverged marched = rethrown_stall(on_the_way);
     EXPECT_EQ(largest_residual(marched.residuals), 0);
-    EXPECT_STREQ(marched.what(), "diverged (its start from k-epsilon's solution is the state to march; of 3 attempts: "
-                                 "from the chain's last state stalled at largest residual 0.49 on the way, at 6.26 MPa; "
-                                 "from rest in smaller steps stalled at largest residual 1.1 on the way, at 7.73 MPa; "
-                                 "from k-epsilon's solution diverged)");
+    EXPECT_STREQ(marched.what(), "diverged (its start from k-epsilon's solution, the state nearest a steady state of 3 "
+                                 "attempts: from the chain's last state stalled at largest residual 0.49 on the way, at "
+                                 "6.26 MPa; from rest in smaller steps stalled at largest residual 1.1 on the way, at "
+                                 "7.73 MPa; from k-epsilon's solution diverged)");
 
-    // before the model's own stalls at the case's level, near or far, and when the model stalled from it
     FailedAttempts at_level(case_level);
-    fail(at_level, "from the chain's last state", field, 1, NotConverged("near", stall_at(5e-3)));
-    fail_from_start(at_level, start, 3, NotConverged("far", stall_at(0.2)));
-    EXPECT_TRUE(at_level.restore_nearest(field));
-    EXPECT_EQ(marker_of(field), 3);
-    const NotConverged from_stall = rethrown_stall(at_level);
-    EXPECT_EQ(largest_residual(from_stall.residuals), 0);
-    EXPECT_STREQ(from_stall.what(), "far (its start from k-epsilon's solution is the state to march; of 2 attempts: from "
-                                    "the chain's last state stalled at largest residual 0.005; from k-epsilon's solution "
-                                    "stalled at largest residual 0.2)");
+    fail(at_level, "from rest", field, 1, NotConverged("own", stall_at(0.2)));
+    diverge_from_start(at_level, start, 3);
+    EXPECT_TRUE(at_level.restore_nearest(start));
+    EXPECT_EQ(marker_of(start), 1);
+    EXPECT_EQ(rethrown_stall(at_level).residuals.continuity, 0.2);
 
     FailedAttempts alone(case_level);
-    fail_from_start(alone, start, 4, std::runtime_error("diverged"));
-    EXPECT_STREQ(rethrown_stall(alone).what(), "diverged (its start from k-epsilon's solution is the state to march; of 1 "
-                                               "attempt: from k-epsilon's solution diverged)");
+    diverge_from_start(alone, start, 4);
+    const NotConverged only = rethrown_stall(alone);
+    EXPECT_STREQ(only.what(), "diverged (its start from k-epsilon's solution, the state nearest a steady state of 1 "
+                              "attempt: from k-epsilon's solution diverged)");
   }
 } // namespace servodrift::flow
