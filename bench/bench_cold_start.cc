@@ -5,7 +5,8 @@
 // Launder-Sharma then from the two-layer k-epsilon's solution, and a case that still stalls marched in
 // time for its time average), with every flow model. Cases 28-31 are the sweep's stalled hot orifice
 // cases at 15.45 MPa on its path: after the chain's 1.03 MPa state, that state alone from rest (28,
-// 29) or as the sweep's orifice path reaches it from 120 degC (30, 31). Prints per case the outcome (converged, or flagged 2 with the solver's
+// 29) or as the sweep's orifice path reaches it from 120 degC (30, 31). Cases 32 and 33 are cases 1 and
+// 2 single phase, the flow the other code oscillates in at 40 um. Prints per case the outcome (converged, or flagged 2 with the solver's
 // reason on stderr), the iterations, the wall time, C_d and the flapper force. Not a test (minutes).
 //   OMP_THREAD_LIMIT=1 build/bench/bench_cold_start [case numbers, default all, e.g. 1,4,7] [parameter=value ...]
 // (extra arguments are `--set' entries, e.g. 'Flow solver/Report interval=100' for the residual history)
@@ -110,6 +111,8 @@ int main(int argc, char **argv)
     {"Launder-Sharma orifice at 90 degC, 15.45 MPa after 1.03 MPa", orifice, Turbulence::k_epsilon_launder_sharma, 1, 0, 15.45e6, true, 0.6, 90, 1.03e6},
     {"Launder-Sharma orifice at 100 degC, 15.45 MPa after the path's 1.03 MPa", orifice, Turbulence::k_epsilon_launder_sharma, 1, 0, 15.45e6, true, 0.6, 100, 1.03e6, 120},
     {"Launder-Sharma orifice at 90 degC, 15.45 MPa after the path's 1.03 MPa", orifice, Turbulence::k_epsilon_launder_sharma, 1, 0, 15.45e6, true, 0.6, 90, 1.03e6, 120},
+    {"laminar null, resolution 2, single phase", nozzle, Turbulence::laminar, 2, 40e-6, 10.4e6, false, 0.6},
+    {"laminar 60 um, resolution 2, single phase", nozzle, Turbulence::laminar, 2, 60e-6, 10.4e6, false, 0.6},
   };
   std::set<std::size_t> chosen;
   std::vector<std::string> settings{"Output/Progress=none", "Output/Flow fields=none"};
@@ -175,7 +178,7 @@ int main(int argc, char **argv)
       else if (r[flag] == flags::not_converged)
         std::printf("FAILED (flag 2) after %.1f s\n", seconds);
       else if (r[flag] == flags::time_averaged)
-        std::printf("no steady solution: time average (flag 5) over %.3g s, %.0f iterations, %.1f s, C_d %.5f +- %.5f "
+        std::printf("time-averaged (flag 5: the steady iteration stalled) over %.3g s, %.0f iterations, %.1f s, C_d %.5f +- %.5f "
                     "(spread %.5f), F %.5f +- %.5f N (spread %.5f) (standard errors of the means; spreads: standard "
                     "deviations), %.0f averaged steps at the iteration cap, decorrelation lag %.0f steps of %.0f "
                     "averaged\n",
