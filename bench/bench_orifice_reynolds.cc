@@ -7,7 +7,7 @@
 // iterations and wall time of each case.
 //   OMP_THREAD_LIMIT=1 build/bench/bench_orifice_reynolds [parameter=value ...]
 #include "common/valve_description.h"
-#include "flow/pilot_closed_forms.h"
+#include "common/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
 
 #include <chrono>

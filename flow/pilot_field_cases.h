@@ -5,7 +5,7 @@
 #include "common/sweep.h"
 #include "common/table.h"
 #include "common/valve_description.h"
-#include "flow/pilot_closed_forms.h"
+#include "common/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
 
 #include <map>

@@ -2,7 +2,7 @@
 
 #include "common/stage_output.h"
 #include "common/sweep.h"
-#include "flow/pilot_closed_forms.h"
+#include "common/pilot_closed_forms.h"
 #include "flow/pilot_field_stage.h"
 
 namespace servodrift::flow

@@ -2,8 +2,8 @@
 // against model.md 1.8-1.10, 2.6 and section 3.
 #include "common/pilot_bridge.h"
 #include "common/units.h"
-#include "flow/paper_fits.h"
-#include "flow/pilot_closed_forms.h"
+#include "common/paper_fits.h"
+#include "common/pilot_closed_forms.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 #include <cmath>
 
 using namespace servodrift;
-using flow::PilotClosedForms;
+using servodrift::PilotClosedForms;
 using test::relative;
 
 namespace
@@ -115,20 +115,20 @@ TEST(PaperFits, E26ValuesAndWindow)
                                               {6000, 0.758}, {8600, 0.781}, {10000, 0.783}};
   for (const auto &[Re, Cd] : values)
     {
-      const auto c = flow::paper::fixed_orifice_discharge_coefficient(Re);
+      const auto c = paper::fixed_orifice_discharge_coefficient(Re);
       EXPECT_NEAR(c.value, Cd, 0.0006) << Re;
       EXPECT_FALSE(c.clamped);
     }
-  const auto high = flow::paper::fixed_orifice_discharge_coefficient(3.7e5);
+  const auto high = paper::fixed_orifice_discharge_coefficient(3.7e5);
   EXPECT_TRUE(high.clamped);
   EXPECT_LE(high.value, 0.78755); // C6: C_d0 <= 0.7875 (4 digits)
-  EXPECT_DOUBLE_EQ(high.value, flow::paper::fixed_orifice_discharge_coefficient(11688).value);
-  EXPECT_TRUE(flow::paper::fixed_orifice_discharge_coefficient(500).clamped);
+  EXPECT_DOUBLE_EQ(high.value, paper::fixed_orifice_discharge_coefficient(11688).value);
+  EXPECT_TRUE(paper::fixed_orifice_discharge_coefficient(500).clamped);
 }
 
 TEST(PaperFits, E27MaximumAndFlowForceTable)
 {
-  using flow::paper::nozzle_discharge_coefficient;
+  using paper::nozzle_discharge_coefficient;
   // vertex at T* = 3.49e-4/(2 * 2.26e-6) = 77.2 degC; C_dn between 0.593 and 0.598 over 40..120
   const double peak = nozzle_discharge_coefficient(77.2).value;
   EXPECT_GT(peak, nozzle_discharge_coefficient(70).value);
@@ -140,8 +140,8 @@ TEST(PaperFits, E27MaximumAndFlowForceTable)
     }
   EXPECT_TRUE(nozzle_discharge_coefficient(130).clamped);
   // section 3 item 10 table, reproduced at its nodes
-  EXPECT_DOUBLE_EQ(flow::paper::flow_force_stiffness(40).value, 57.5e3);
-  EXPECT_DOUBLE_EQ(flow::paper::flow_force_stiffness(60).value, 15.2e3);
-  EXPECT_DOUBLE_EQ(flow::paper::flow_force_stiffness(120).value, 34.5e3);
-  EXPECT_TRUE(flow::paper::flow_force_stiffness(20).clamped);
+  EXPECT_DOUBLE_EQ(paper::flow_force_stiffness(40).value, 57.5e3);
+  EXPECT_DOUBLE_EQ(paper::flow_force_stiffness(60).value, 15.2e3);
+  EXPECT_DOUBLE_EQ(paper::flow_force_stiffness(120).value, 34.5e3);
+  EXPECT_TRUE(paper::flow_force_stiffness(20).clamped);
 }

@@ -1,7 +1,7 @@
 // The pilot stage's field sweep (flow/pilot_field_stage): unconverged cases become flagged rows, and
 // the fixed orifice's continuation path over temperature keeps the answer of a start from rest.
 #include "common/table.h"
-#include "flow/pilot_closed_forms.h"
+#include "common/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
 #include "flow/pilot_field_stage.h"
 #include "tests/support/test_support.h"

@@ -13,7 +13,7 @@
 // - bad cases are refused (closed gap, reversed pressure difference).
 #include "common/error.h"
 #include "common/units.h"
-#include "flow/pilot_closed_forms.h"
+#include "common/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
 #include "tests/support/test_support.h"
 #include "tests/verification/pilot_field_test_cases.h"

@@ -14,7 +14,7 @@
 #include "common/gmsh_mesh.h"
 #include "common/output_files.h"
 #include "flow/fv_mesh.h"
-#include "flow/pilot_closed_forms.h"
+#include "common/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
 #include "flow/simplec.h"
 #include "tests/support/test_support.h"

@@ -1,10 +1,10 @@
-#include "flow/paper_fits.h"
+#include "common/paper_fits.h"
 
 #include "common/grid_function.h"
 
 #include <algorithm>
 
-namespace servodrift::flow::paper
+namespace servodrift::paper
 {
   namespace
   {
@@ -37,4 +37,4 @@ namespace servodrift::flow::paper
     const ClampedValue t = clamp(T, 40.0, 120.0);
     return {table(t.value), t.clamped};
   }
-} // namespace servodrift::flow::paper
+} // namespace servodrift::paper

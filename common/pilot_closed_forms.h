@@ -4,7 +4,7 @@
 #include "common/thermal_laws.h"
 #include "common/valve_description.h"
 
-namespace servodrift::flow
+namespace servodrift
 {
   struct OrificeState
   {
@@ -29,17 +29,26 @@ namespace servodrift::flow
     /// Nozzle-flapper gap h >= 0 [m] at dp = p_c - p_r >= 0 [Pa].
     OrificeState nozzle(double gap, double pressure_difference) const;
 
+    /// E23: force of a jet of flow Q from a bore at dp = p_c - p_r on the flapper: the bore pressure
+    /// on the nozzle's projection plus the momentum of the jet turned radial (times the paper-table
+    /// scale under that law) [N]
+    double jet_force(double pressure_difference, double flow_rate) const;
+
     double density() const { return rho; }
     double kinematic_viscosity() const { return nu; }
     const laws::PilotStageGeometry &geometry() const { return g; }
 
   private:
-    PilotStageParameters pilot;
+    PilotStageParameters::OrificeLaw orifice_law;
+    PilotStageParameters::NozzleLaw nozzle_law;
+    PilotStageParameters::FlapperForceLaw force_law;
+    double curtain_discharge_coefficient; ///< C_d,inf of E22 [1]
     laws::PilotStageGeometry g;
     double T, rho, nu, mu;
     double force_scale = 1;     ///< paper-table flapper force: K_f,paper(T)/K_f,E23(T)
     bool force_clamped = false;
 
     OrificeState momentum_nozzle(double gap, double dp) const;
+    double momentum_force(double dp, double flow_rate) const; ///< E23 unscaled [N]
   };
-} // namespace servodrift::flow
+} // namespace servodrift

@@ -1,17 +1,20 @@
-#include "flow/pilot_closed_forms.h"
+#include "common/pilot_closed_forms.h"
 
 #include "common/pilot_bridge.h"
 #include "common/units.h"
-#include "flow/paper_fits.h"
+#include "common/paper_fits.h"
 
 #include <cmath>
 
-namespace servodrift::flow
+namespace servodrift
 {
   using units::pi;
 
   PilotClosedForms::PilotClosedForms(const ValveDescription &valve, double temperature)
-    : pilot(valve.pilot)
+    : orifice_law(valve.pilot.fixed_orifice_law)
+    , nozzle_law(valve.pilot.nozzle_law)
+    , force_law(valve.pilot.flapper_force_law)
+    , curtain_discharge_coefficient(valve.pilot.nozzle_discharge_coefficient)
     , g(laws::pilot_stage_geometry(valve.pilot, valve.armature, valve.expansion, temperature,
                                    valve.operating.reference_temperature))
     , T(temperature)
@@ -21,7 +24,7 @@ namespace servodrift::flow
     nu = oil.kinematic_viscosity(T).value;
     mu = rho * nu;
 
-    if (pilot.flapper_force_law == PilotStageParameters::FlapperForceLaw::paper_table)
+    if (force_law == PilotStageParameters::FlapperForceLaw::paper_table)
       {
         // Scale E23 so that the blocked-bridge flow-force stiffness at null equals the paper's K_f(T):
         // K_f,E23 by central differences of the bridge with the momentum force (1.10, 4.2).
@@ -54,7 +57,7 @@ namespace servodrift::flow
     const double D0 = g.fixed_orifice_diameter, A0 = 0.25 * pi * D0 * D0;
     const double ideal_velocity = std::sqrt(2 * dp / rho);
     s.reynolds_number = D0 * ideal_velocity / nu; // E17: on the ideal velocity
-    if (pilot.fixed_orifice_law == PilotStageParameters::OrificeLaw::lichtarowicz)
+    if (orifice_law == PilotStageParameters::OrificeLaw::lichtarowicz)
       {
         s.discharge_coefficient = lichtarowicz_discharge_coefficient(s.reynolds_number, g.fixed_orifice_length / D0);
       }
@@ -71,15 +74,15 @@ namespace servodrift::flow
   OrificeState PilotClosedForms::momentum_nozzle(double h, double dp) const
   {
     OrificeState s;
-    const double DN = g.nozzle_diameter, AN = 0.25 * pi * DN * DN;
+    const double DN = g.nozzle_diameter;
     const double curtain = pi * DN * h; // curtain area of the gap
     const double ideal_velocity = std::sqrt(2 * dp / rho);
-    if (pilot.nozzle_law == PilotStageParameters::NozzleLaw::curtain)
+    if (nozzle_law == PilotStageParameters::NozzleLaw::curtain)
       {
         if (h > 0 && dp > 0)
           {
             // E22: dp = rho Q^2/(2 (C_dinf pi D_N h)^2) + 6 mu ln(D_land/D_N) Q/(pi h^3), solved for Q
-            const double a = rho / (2 * std::pow(pilot.nozzle_discharge_coefficient * curtain, 2));
+            const double a = rho / (2 * std::pow(curtain_discharge_coefficient * curtain, 2));
             const double b = 6 * mu * std::log(g.land_diameter / DN) / (pi * h * h * h);
             s.flow_rate = 2 * dp / (b + std::sqrt(b * b + 4 * a * dp)); // the positive root, without cancellation
             s.discharge_coefficient = s.flow_rate / (curtain * ideal_velocity);
@@ -96,9 +99,20 @@ namespace servodrift::flow
     // E18: Re_n = D_h C_dn sqrt(2 dp/rho)/nu with the slot hydraulic diameter D_h = 2 pi D_N h/(pi D_N + h)
     const double D_h = 2 * pi * DN * h / (pi * DN + h);
     s.reynolds_number = D_h * s.discharge_coefficient * ideal_velocity / nu;
-    // E23: bore pressure on the nozzle projection plus the momentum of the jet turned radial
-    s.flapper_force = dp * AN + rho * s.flow_rate * s.flow_rate / AN;
+    s.flapper_force = momentum_force(dp, s.flow_rate);
     return s;
+  }
+
+  double PilotClosedForms::momentum_force(double dp, double Q) const
+  {
+    // E23: bore pressure on the nozzle projection plus the momentum of the jet turned radial
+    const double AN = 0.25 * pi * g.nozzle_diameter * g.nozzle_diameter;
+    return dp * AN + rho * Q * Q / AN;
+  }
+
+  double PilotClosedForms::jet_force(double dp, double Q) const
+  {
+    return force_scale * momentum_force(dp, Q);
   }
 
   OrificeState PilotClosedForms::nozzle(double h, double dp) const
@@ -108,4 +122,4 @@ namespace servodrift::flow
     s.clamped = s.clamped || force_clamped;
     return s;
   }
-} // namespace servodrift::flow
+} // namespace servodrift

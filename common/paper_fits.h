@@ -2,7 +2,7 @@
 // The paper's own fitted laws for the pilot stage (model.md D2, 1.11, section 3 items 8-10), used
 // only by the paper preset. Each is used inside its validity window and clamped to the window's end
 // outside it, with a flag (C6).
-namespace servodrift::flow::paper
+namespace servodrift::paper
 {
   struct ClampedValue
   {
@@ -19,4 +19,4 @@ namespace servodrift::flow::paper
   /// Section 3 item 10: the paper's flow-force stiffness K_f(T) [N/m] (paper-fidelity table 40..120
   /// degC, monotone cubic interpolation in between).
   ClampedValue flow_force_stiffness(double temperature);
-} // namespace servodrift::flow::paper
+} // namespace servodrift::paper
