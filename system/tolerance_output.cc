@@ -174,19 +174,28 @@ namespace servodrift::system
                              " estimator, OpenTURNS) of each output, N = " + std::to_string(s.base_samples) + ", " +
                              std::to_string(s.evaluations) + " valves; " + format_number(100 * t.confidence_level) +
                              " % bootstrap intervals of " + std::to_string(t.bootstrap_size) + " resamples");
+    sobol.comments.push_back("an output whose standard deviation over the design is at most " +
+                             format_number(s.standard_deviation_floor) +
+                             " % of rated has no variance to share out: its indices are undefined (empty cells), "
+                             "the reason in note");
     for (std::size_t o = 0; o < s.outputs.size(); ++o)
-      if (s.indices[o].constant_output)
-        sobol.comments.push_back(s.outputs[o] + " does not vary over the design: its indices are undefined, written as 0");
+      if (!s.indices[o].defined())
+        sobol.comments.push_back(s.outputs[o] + ": indices undefined, " + s.indices[o].undefined);
     sobol.columns = {"output[-]", "quantity[-]", "first_order[1]", "first_order_lower[1]", "first_order_upper[1]",
-                     "total[1]", "total_lower[1]", "total_upper[1]", "output_variance[%^2]"};
+                     "total[1]", "total_lower[1]", "total_upper[1]", "output_variance[%^2]", "note[-]"};
     for (std::size_t o = 0; o < s.outputs.size(); ++o)
       for (std::size_t k = 0; k < r.quantities.size(); ++k)
         {
           const auto &ix = s.indices[o];
-          sobol.rows.push_back({s.outputs[o], snake_case(quantity_name(r.quantities[k])), cell(ix.first_order[k]),
-                                cell(ix.first_order_interval[k].lower), cell(ix.first_order_interval[k].upper),
-                                cell(ix.total[k]), cell(ix.total_interval[k].lower), cell(ix.total_interval[k].upper),
-                                cell(s.output_variance[o])});
+          const std::string quantity = snake_case(quantity_name(r.quantities[k]));
+          if (ix.defined())
+            sobol.rows.push_back({s.outputs[o], quantity, cell(ix.first_order[k]), cell(ix.first_order_interval[k].lower),
+                                  cell(ix.first_order_interval[k].upper), cell(ix.total[k]),
+                                  cell(ix.total_interval[k].lower), cell(ix.total_interval[k].upper),
+                                  cell(s.output_variance[o]), ""});
+          else
+            sobol.rows.push_back({s.outputs[o], quantity, "", "", "", "", "", "", cell(s.output_variance[o]),
+                                  "undefined: " + ix.undefined});
         }
     write_file_atomically(dir + "/sobol_indices.csv", sobol.text());
   }
@@ -243,7 +252,7 @@ namespace servodrift::system
        "set arrow from " + format_cell(spec) + ",0 to " + format_cell(spec) + ",1 nohead lc 'red' lw 2\n"
        "plot 'tolerance_cdf.dat' using 1:2 with steps lw 2 lc 'blue' title 'empirical CDF', NaN with lines lc 'red' "
        "lw 2 title 'spec " + format_cell(spec) + " %'\n"}};
-    if (r.sobol)
+    if (r.sobol && r.sobol->indices.front().defined())
       {
         std::ostringstream bars;
         bars << "# quantity first_order[1] lower upper total[1] lower upper (output: maximum |null shift|)\n";
@@ -293,13 +302,16 @@ namespace servodrift::system
         out << "**Largest contributors** to the maximum |null shift| (total Sobol' index, " << estimator_name(t.sobol_estimator)
             << ", N = " << r.sobol->base_samples << ", " << format_number(100 * t.confidence_level) << " % interval):\n\n";
         const auto &ix = r.sobol->indices.front();
-        if (ix.constant_output)
-          out << "(none: no toleranced quantity moves the null shift)\n";
+        if (!ix.defined())
+          out << "(none: " << ix.undefined << ")\n";
         else
           for (std::size_t k : largest_contributors(r, 3))
             out << "1. " << quantity_name(r.quantities[k]) << ": total " << format_number(ix.total[k]) << " ["
                 << format_number(ix.total_interval[k].lower) << ", " << format_number(ix.total_interval[k].upper)
                 << "], first order " << format_number(ix.first_order[k]) << "\n";
+        for (std::size_t o = 1; o < r.sobol->outputs.size(); ++o)
+          if (!r.sobol->indices[o].defined())
+            out << "\n`" << r.sobol->outputs[o] << "` has no indices: " << r.sobol->indices[o].undefined << ".\n";
         out << "\nEvery index, also of the null shift at the coldest and the hottest temperature: "
                "`system/sobol_indices.csv`.\n\n";
       }

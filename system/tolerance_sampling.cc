@@ -131,11 +131,19 @@ namespace servodrift::system
     });
   }
 
-  SobolIndices sobol_indices(const ToleranceParameters &t, const SampleRows &design, const std::vector<double> &output)
+  SobolIndices sobol_indices(const ToleranceParameters &t, const SampleRows &design, const std::vector<double> &output,
+                             double floor)
   {
-    // An output that no tolerance moves (e.g. only the magnets' remanence toleranced, which leaves
-    // the null of an otherwise ideal valve where it is) has no variance to share out.
-    if (std::all_of(output.begin(), output.end(), [&](double y) { return y == output.front(); }))
+    // An output that no tolerance moves (the null shift at the nulling temperature; or only the
+    // magnets' remanence toleranced, which leaves an otherwise ideal valve's null where it is) has
+    // no variance to share out: estimators given round-off return noise, not indices.
+    double mean = 0, variance = 0;
+    for (double y : output)
+      mean += y / double(output.size());
+    for (double y : output)
+      variance += (y - mean) * (y - mean) / double(std::max<std::size_t>(output.size(), 2) - 1);
+    const double spread = std::sqrt(variance);
+    if (!(spread > floor))
       {
         const std::size_t d = design.empty() ? 0 : design.front().size();
         SobolIndices none;
@@ -143,7 +151,10 @@ namespace servodrift::system
         none.total.assign(d, 0.0);
         none.first_order_interval.assign(d, {0.0, 0.0});
         none.total_interval.assign(d, {0.0, 0.0});
-        none.constant_output = true;
+        none.undefined = spread == 0 ? "the output does not vary over the design"
+                                     : "the output's standard deviation over the design, " + format_number(spread) +
+                                         ", is at most its floor " + format_number(floor) +
+                                         " (round-off, not a tolerance's effect)";
         return none;
       }
     return guarded("the Sobol' indices", [&] {

@@ -29,12 +29,17 @@ namespace servodrift::system
   {
     std::vector<double> first_order, total;          ///< per active quantity [1]
     std::vector<Interval> first_order_interval, total_interval;
-    /// The output did not vary over the design: indices undefined, written as 0
-    bool constant_output = false;
+    /// Why the indices are undefined (the output's spread over the design is below its floor: no
+    /// variance to share out, or only the solvers' round-off); empty when they are estimated
+    std::string undefined;
+    bool defined() const { return undefined.empty(); }
   };
   /// Indices of one output, from the design and its outputs (same row order), by the estimator of
-  /// `tolerances' with its bootstrap intervals at its confidence level.
-  SobolIndices sobol_indices(const ToleranceParameters &tolerances, const SampleRows &design, const std::vector<double> &output);
+  /// `tolerances' with its bootstrap intervals at its confidence level; undefined (and not
+  /// estimated) when the output's standard deviation over the design is at most
+  /// `standard_deviation_floor' (in the output's unit).
+  SobolIndices sobol_indices(const ToleranceParameters &tolerances, const SampleRows &design, const std::vector<double> &output,
+                             double standard_deviation_floor = 0);
 
   /// Empirical quantiles of `values' at probabilities `p' (OpenTURNS' estimator).
   std::vector<double> quantiles(const std::vector<double> &values, const std::vector<double> &p);

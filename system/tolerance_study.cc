@@ -57,10 +57,11 @@ namespace servodrift::system
 
   SobolStudy sobol_study(const ToleranceParameters &t, const std::vector<std::string> &outputs,
                          const std::function<std::vector<double>(const std::vector<double> &)> &evaluate,
-                         OutputParameters::Progress progress)
+                         OutputParameters::Progress progress, double floor)
   {
     SobolStudy s;
     s.base_samples = t.sobol_base_samples;
+    s.standard_deviation_floor = floor;
     s.outputs = outputs;
     const SampleRows design = sobol_design(t);
     s.evaluations = design.size();
@@ -70,7 +71,7 @@ namespace servodrift::system
         std::vector<double> y;
         for (const auto &v : values)
           y.push_back(v[k]);
-        s.indices.push_back(sobol_indices(t, design, y));
+        s.indices.push_back(sobol_indices(t, design, y, floor));
         const std::vector<double> a(y.begin(), y.begin() + t.sobol_base_samples);
         double mean = 0, var = 0;
         for (double v : a)
@@ -186,7 +187,11 @@ namespace servodrift::system
                                              column([&](const auto &v) { return v.brake_pressure_deviation[k]; })));
       }
 
-    // Sobol': the null-shift current alone, over the range and at the two ends [% of rated]
+    // Sobol': the null-shift current alone, over the range and at the two ends [% of rated]. Its
+    // floor, a millionth of a percent of rated (0.2 nA of 20 mA), lies far below any null-shift
+    // spec (about 1-4 % of rated) and far above the round-off of the nulling and null-shift
+    // roots (below 1e-9 %): at the nulling temperature every valve's null shift is that round-off.
+    constexpr double null_shift_floor = 1e-6; // [% of rated]
     if (t.sobol_base_samples > 0)
       {
         const ThermalNullShiftEvaluator null_only(model, r.temperatures, false);
@@ -200,7 +205,7 @@ namespace servodrift::system
             return std::vector<double>{percent * v.maximum_null_shift, percent * v.null_shift_current.front(),
                                        percent * v.null_shift_current.back()};
           },
-          progress);
+          progress, null_shift_floor);
       }
     return r;
   }

@@ -30,6 +30,7 @@ namespace servodrift::system
     std::vector<std::string> outputs;       ///< names of the outputs analysed
     std::vector<SobolIndices> indices;      ///< per output
     std::vector<double> output_variance;    ///< per output, over the design's A block
+    double standard_deviation_floor;        ///< below it an output's indices are undefined (its unit)
   };
 
   struct ToleranceResults
@@ -61,10 +62,11 @@ namespace servodrift::system
                            OutputParameters::Progress progress);
 
   /// The Sobol' study of any model of the active quantities (the valve's, or a test function):
-  /// the design of `tolerances', `evaluate' on it, and the indices of each output.
+  /// the design of `tolerances', `evaluate' on it, and the indices of each output whose standard
+  /// deviation over the design exceeds `standard_deviation_floor' (the others undefined).
   SobolStudy sobol_study(const ToleranceParameters &tolerances, const std::vector<std::string> &outputs,
                          const std::function<std::vector<double>(const std::vector<double> &)> &evaluate,
-                         OutputParameters::Progress progress);
+                         OutputParameters::Progress progress, double standard_deviation_floor = 0);
 
   /// The whole study on the valve of `model' with the description's `Tolerances'.
   ToleranceResults compute_tolerances(const ValveModel &model, OutputParameters::Progress progress);

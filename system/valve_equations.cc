@@ -61,22 +61,31 @@ namespace servodrift::system
     coil_resistance = laws::coil_resistance(tm, T);
     L_c = laws::coil_inductance(tm);
 
-    // The asymmetric valve (issue 25; doc/method.md "Asymmetric valve"). The tables hold the
-    // nominal geometry. A fixed orifice of diameter d' = s d keeps C_d(Re) (geometric similarity):
-    // Re/C_d = d sqrt(2 dp/rho)/nu, so C_d' at dp is the table's at s^2 dp, and Q' = s^2 c(s^2 dp)
-    // sqrt(dp) with the table's conductance c. The gap flow's Reynolds number (gap x jet velocity)
-    // does not see the nozzle diameter: the curtain area pi d_N x scales by s_N, the jet force
-    // (bore pressure over pi d_N^2/4) by s_N^2.
+    // The asymmetric valve (issue 25; doc/method.md "Asymmetric valve"): the tables hold the
+    // nominal geometry; a side's own bores enter through the closed forms at that side's geometry.
+    pilot_tables = {&f, &f};
     for (const Side side : {left, right})
       {
         const SideDeviations &d = offsets_.sides[side];
         side_gap[side] = x0 + d.null_gap;
-        const double s0 = (valve.pilot.fixed_orifice_diameter + d.orifice_diameter) / valve.pilot.fixed_orifice_diameter;
-        orifice_area_ratio[side] = s0 * s0;
         orifice_factor[side] = d.orifice_discharge_factor;
-        nozzle_diameter_ratio[side] = (valve.pilot.nozzle_diameter + d.nozzle_diameter) / valve.pilot.nozzle_diameter;
         nozzle_factor[side] = d.nozzle_discharge_factor;
-        force_ratio[side] = nozzle_diameter_ratio[side] * nozzle_diameter_ratio[side];
+        orifice_bore_deviates[side] = d.orifice_diameter != 0;
+        nozzle_bore_deviates[side] = d.nozzle_diameter != 0;
+        side_deviates[side] = orifice_bore_deviates[side] || nozzle_bore_deviates[side] ||
+                              d.orifice_discharge_factor != 1 || d.nozzle_discharge_factor != 1;
+        if (!side_deviates[side])
+          continue;
+        if (!nominal_forms)
+          nominal_forms = std::make_shared<const PilotClosedForms>(valve, T);
+        side_forms[side] = nominal_forms;
+        if (orifice_bore_deviates[side] || nozzle_bore_deviates[side])
+          {
+            ValveDescription built = valve;
+            built.pilot.fixed_orifice_diameter += d.orifice_diameter;
+            built.pilot.nozzle_diameter += d.nozzle_diameter;
+            side_forms[side] = std::make_shared<const PilotClosedForms>(built, T);
+          }
       }
     magnetic_null_ = offsets_.magnetic_null;
     motor_mismatch = offsets_.magnetic.any();
@@ -147,34 +156,83 @@ namespace servodrift::system
     return {std::max(0.0, side_gap[left] - x_f), std::max(0.0, side_gap[right] + x_f)};
   }
 
+  namespace
+  {
+    // The closed forms' ratio at dp -> 0 or h -> 0 is their laminar limit (0/0 at the limit
+    // itself): evaluated at these floors, deep in the laminar range of every bore.
+    constexpr double ratio_pressure_floor = 1.0; // [Pa]
+    constexpr double ratio_gap_floor = 1e-8;     // [m]
+  } // namespace
+
+  double ValveEquations::orifice_bore_ratio(Side side, double a) const
+  {
+    if (!orifice_bore_deviates[side])
+      return 1;
+    const double dp = std::max(a, ratio_pressure_floor);
+    return side_forms[side]->fixed_orifice(dp).flow_rate / nominal_forms->fixed_orifice(dp).flow_rate; // E21
+  }
+
+  double ValveEquations::nozzle_bore_ratio(Side side, double h, double a) const
+  {
+    if (!nozzle_bore_deviates[side])
+      return 1;
+    const double dp = std::max(a, ratio_pressure_floor), gap = std::max(h, ratio_gap_floor);
+    return side_forms[side]->nozzle(gap, dp).flow_rate / nominal_forms->nozzle(gap, dp).flow_rate; // E22
+  }
+
   // The tables give Q/sqrt(dp), which tends to 0 in the laminar limit dp -> 0, so Q = c(dp) sqrt(dp)
   // is a signed square root with a laminar region (E20) of the table's own making. Beyond the
   // tabulated pressure range (only in a transient) C_d is held at its last value, and flagged.
+  double ValveEquations::tabulated_orifice_flow(Side side, double a) const
+  {
+    if (a > orifice_dp_max)
+      table_exceeded = true;
+    return pilot_tables[side]->orifice_conductance(T, std::min(a, orifice_dp_max)) * std::sqrt(a);
+  }
+
   double ValveEquations::orifice_flow(Side side, double dp) const
   {
-    const double a = std::abs(dp), a_similar = orifice_area_ratio[side] * a; // s^2 dp: the same Re (constructor)
-    if (a_similar > orifice_dp_max)
+    const double a = std::abs(dp);
+    return std::copysign(orifice_factor[side] * orifice_bore_ratio(side, a) * tabulated_orifice_flow(side, a), dp); // E31
+  }
+
+  double ValveEquations::tabulated_nozzle_flow(Side side, double gap, double a) const
+  {
+    if (a > nozzle_dp_max)
       table_exceeded = true;
-    const double c = orifice_factor[side] * orifice_area_ratio[side] * f.orifice_conductance(T, std::min(a_similar, orifice_dp_max));
-    return std::copysign(c * std::sqrt(a), dp); // E31
+    const double h = std::clamp(gap, 0.0, gap_max);
+    return pilot_tables[side]->nozzle_conductance(T, h, std::min(a, nozzle_dp_max)) * std::sqrt(a);
   }
 
   double ValveEquations::nozzle_flow(Side side, double gap, double dp) const
   {
     const double a = std::abs(dp);
-    if (a > nozzle_dp_max)
-      table_exceeded = true;
-    const double h = std::clamp(gap, 0.0, gap_max);
-    const double c = nozzle_factor[side] * nozzle_diameter_ratio[side] * f.nozzle_conductance(T, h, std::min(a, nozzle_dp_max));
-    return std::copysign(c * std::sqrt(a), dp); // E32
+    return std::copysign(nozzle_factor[side] * nozzle_bore_ratio(side, gap, a) * tabulated_nozzle_flow(side, gap, a), dp); // E32
   }
 
   double ValveEquations::flapper_force(Side side, double gap, double dp) const
   {
     // E23 / table; odd in dp (a reversed jet pulls), proportional to dp beyond the table
+    const GridFunction &table = pilot_tables[side]->flapper_force;
     const double a = std::abs(dp), h = std::clamp(gap, 0.0, gap_max);
-    const double force = a <= nozzle_dp_max ? f.flapper_force(T, h, a) : f.flapper_force(T, h, nozzle_dp_max) * a / nozzle_dp_max;
-    return std::copysign(force_ratio[side] * force, dp);
+    double force = a <= nozzle_dp_max ? table(T, h, a) : table(T, h, nozzle_dp_max) * a / nozzle_dp_max;
+    if (side_deviates[side])
+      {
+        // E23's change from the tables' bore and flow to this side's: the bore pressure on its own
+        // projection, the momentum of its own flow (its discharge factor and bore included)
+        const double tabulated = tabulated_nozzle_flow(side, gap, a);
+        const double flow = nozzle_factor[side] * nozzle_bore_ratio(side, gap, a) * tabulated;
+        force += side_forms[side]->jet_force(a, flow) - nominal_forms->jet_force(a, tabulated);
+      }
+    return std::copysign(force, dp);
+  }
+
+  bool ValveEquations::symmetric_bridge() const
+  {
+    const auto &[l, r] = offsets_.sides;
+    return l.orifice_diameter == r.orifice_diameter && l.nozzle_diameter == r.nozzle_diameter &&
+           l.null_gap == r.null_gap && l.orifice_discharge_factor == r.orifice_discharge_factor &&
+           l.nozzle_discharge_factor == r.nozzle_discharge_factor && pilot_tables[left] == pilot_tables[right];
   }
 
   double ValveEquations::cavity_inflow(Side side, double gap, double pressure, double volume_rate) const

@@ -4,12 +4,14 @@
 // static model (valve_model.cc) solves these equations at zero rates; the dynamic analyses integrate
 // and linearise the same right-hand side. Only the coefficient tables and the valve description go
 // in; nothing here knows which level made a table (D13).
+#include "common/pilot_closed_forms.h"
 #include "common/torque_motor_circuit.h"
 #include "common/valve_description.h"
 #include "system/stage_tables.h"
 
 #include <array>
 #include <cstddef>
+#include <memory>
 
 namespace servodrift::system
 {
@@ -105,7 +107,8 @@ namespace servodrift::system
     double orifice_flow(Side side, double pressure_difference) const;
     /// E32: Q_N through one side's nozzle-flapper gap for dp = p - p_r [m^3/s]
     double nozzle_flow(Side side, double gap, double pressure_difference) const;
-    /// E23 / table: force of one side's jet on the flapper [N]
+    /// E23 / table: force of one side's jet on the flapper, with E23's change for this side's own
+    /// bore and flow where the side is built off the tables' geometry [N]
     double flapper_force(Side side, double gap, double pressure_difference) const;
     /// E33's numerator: net inflow Q_0 - Q_N - (spool end's volume rate) into a control cavity [m^3/s]
     double cavity_inflow(Side side, double gap, double pressure, double volume_rate) const;
@@ -163,6 +166,16 @@ namespace servodrift::system
     double spool_mass() const { return m_v; }                        ///< [kg]
     double coil_inductance() const { return L_c; }                   ///< [H]
     const std::vector<double> &table_currents() const { return f.torque.axis(2); } ///< [A]
+    /// The same valve with one side's pilot stage read from tables of its own (a side tabulated at
+    /// its own geometry; the tables' axes must be the nominal tables')
+    ValveEquations with_side_tables(Side side, const StageFunctions &side_functions) const
+    {
+      ValveEquations e = *this;
+      e.pilot_tables[side] = &side_functions;
+      return e;
+    }
+    /// Both halves of the pilot bridge the same: the same deviations and the same tables
+    bool symmetric_bridge() const;
     /// true once a query went beyond the flow tables' pressure range (constant C_d beyond)
     bool left_tables() const { return table_exceeded; }
     void forget_table_excursions() const { table_exceeded = false; }
@@ -174,8 +187,15 @@ namespace servodrift::system
     bool voltage_drive_;
     double p_s, p_r, r, x0, K_a, J_a, B_a;
     // asymmetric valve (issue 25): per side, and the motor's mismatch mapped through E3
-    std::array<double, 2> side_gap, orifice_area_ratio, orifice_factor;
-    std::array<double, 2> nozzle_diameter_ratio, nozzle_factor, force_ratio;
+    std::array<double, 2> side_gap, orifice_factor, nozzle_factor;
+    /// A side built off the tables' bores carries the table's flows by the closed forms' ratio at
+    /// its own and the tables' bores (E21, E22) and the jet force by E23's change (doc/method.md
+    /// "Asymmetric valve"): the closed forms at the tables' geometry and at each side's; null where
+    /// unused.
+    std::shared_ptr<const PilotClosedForms> nominal_forms;
+    std::array<std::shared_ptr<const PilotClosedForms>, 2> side_forms;
+    std::array<bool, 2> orifice_bore_deviates{}, nozzle_bore_deviates{}, side_deviates{};
+    std::array<const StageFunctions *, 2> pilot_tables; ///< each side's pilot tables (the nominal: &f)
     double magnetic_null_;
     bool motor_mismatch;
     double magnetic_spring_ratio = 1, torque_constant_ratio = 1; // K_m'/K_m, K_t'/K_t at T
@@ -186,6 +206,13 @@ namespace servodrift::system
     double rho, nu;
     double coil_resistance, L_c;
     mutable bool table_exceeded = false;
+
+    /// The tables' flows of one side at |dp| (and a gap in the table) [m^3/s]
+    double tabulated_orifice_flow(Side side, double pressure_difference) const;
+    double tabulated_nozzle_flow(Side side, double gap, double pressure_difference) const;
+    /// Q(side's bore)/Q(tables' bore) by the closed forms (E21 or E22); 1 for the tables' bore
+    double orifice_bore_ratio(Side side, double pressure_difference) const;
+    double nozzle_bore_ratio(Side side, double gap, double pressure_difference) const;
 
     /// One metering edge of opening `opening' (> 0 open) and pressure difference dp across it.
     std::array<double, 2> edge(double opening, double pressure_difference) const;

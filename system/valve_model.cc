@@ -229,10 +229,7 @@ namespace servodrift::system
   {
     // p_L - p_R rises monotonically with x_f (the left gap closes, the right one opens). A
     // symmetric bridge is balanced at x_f = 0 exactly (both halves compute the same numbers).
-    const auto &[l, r] = eq.offsets().sides;
-    if (l.orifice_diameter == r.orifice_diameter && l.nozzle_diameter == r.nozzle_diameter &&
-        l.null_gap == r.null_gap && l.orifice_discharge_factor == r.orifice_discharge_factor &&
-        l.nozzle_discharge_factor == r.nozzle_discharge_factor)
+    if (eq.symmetric_bridge())
       return 0.0;
     const auto imbalance = [&](double x_f) {
       const BridgeState b = bridge(eq, x_f);
@@ -252,12 +249,15 @@ namespace servodrift::system
 
   double ValveModel::nulling_hydraulic_null(const Offsets &o) const
   {
+    return nulling_hydraulic_null(equations(valve.operating.reference_temperature, o));
+  }
+
+  double ValveModel::nulling_hydraulic_null(const ValveEquations &eq) const
+  {
     // At the pilot null x_f* (p_L = p_R) E29 at rest holds the motor against the spring tube and
     // the jets' difference (zero for a symmetric bridge): T_em(T0, theta - theta_m, 0) =
     // K_a (theta - theta_s) + r (F_L - F_R)(x_f*); the adjustment then sets x_n = r theta - x_f*.
-    const double T0 = valve.operating.reference_temperature;
     const double r = valve.armature.pivot_to_nozzle_distance;
-    const ValveEquations eq = equations(T0, o);
     const double x_f = null_flapper_displacement(eq);
     const BridgeState b = bridge(eq, x_f);
     const auto balance = [&](double theta) {

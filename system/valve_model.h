@@ -88,6 +88,8 @@ namespace servodrift::system
     /// Hydraulic null x_n that puts the pilot at null (p_L = p_R) at T0 and i = 0 for the other
     /// offsets and deviations of `offsets': the manufacturer's null adjustment (D8 "nulled at reference").
     double nulling_hydraulic_null(const Offsets &offsets) const;
+    /// The same for the valve's equations at T0 (`equations(T0, offsets)' or a variant of them).
+    double nulling_hydraulic_null(const ValveEquations &equations_at_reference) const;
     /// The flapper position x_f* of the pilot null, p_L = p_R (0 for a symmetric bridge) [m].
     double null_flapper_displacement(const ValveEquations &equations) const;
     /// The current that restores the pilot null (p_L = p_R) at T; empty if it lies outside the

@@ -6,6 +6,7 @@
 #include "structure/spring_tube_stage.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -59,6 +60,13 @@ namespace servodrift::test
     structure::run(v);
     flow::run(v);
     return tables_directory(v);
+  }
+
+  std::string number(double value)
+  {
+    char buffer[32];
+    std::snprintf(buffer, sizeof(buffer), "%.6g", value);
+    return buffer;
   }
 
   double relative(double a, double b)

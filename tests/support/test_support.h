@@ -22,4 +22,6 @@ namespace servodrift::test
   void remove_temporary_directories();
   /// Relative difference |a - b|/|b|.
   double relative(double a, double b);
+  /// A measured value as a test records it (RecordProperty): 6 significant digits.
+  std::string number(double value);
 } // namespace servodrift::test
