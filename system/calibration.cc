@@ -132,7 +132,141 @@ namespace servodrift::system
       std::vector<Measurement> points;
       std::vector<double> sigma, scale, lower, upper;
     };
+
+    /// The size of the measured values (their RMS; the start's residuals' where all are zero; 1
+    /// where those are too), in their SI unit: a first estimate of an unknown common sigma.
+    double data_scale(const CalibrationModel &model, const CalibrationSetup &setup)
+    {
+      double values = 0, residuals = 0;
+      for (const auto &m : setup.data.points)
+        values += m.value * m.value;
+      if (values > 0)
+        return std::sqrt(values / double(setup.data.points.size()));
+      std::vector<double> start;
+      for (const auto &q : setup.parameters)
+        start.push_back(q.initial);
+      for (double y : model.predict(start, setup.data.points))
+        residuals += y * y;
+      return residuals > 0 ? std::sqrt(residuals / double(setup.data.points.size())) : 1.0;
+    }
+
+    /// What the data determine: the singular value decomposition of the Jacobian with unit columns
+    /// (scale-free). A direction whose singular value is below 1e-6 of the largest changes the fit
+    /// less than 1e-12 of the others: the data cannot see it, and the parameters that make it up
+    /// (components above 0.1) cannot be told apart, or one does not act at all.
+    struct Identifiability
+    {
+      Eigen::VectorXd column_norm;       ///< of the Jacobian's columns
+      Eigen::VectorXd singular_values;
+      Eigen::MatrixXd directions;        ///< V, in unit-column coordinates
+      std::vector<Eigen::Index> lost;    ///< the directions the data cannot see
+      std::vector<bool> identifiable;
+      std::size_t rank;
+    };
+
+    template <typename Matrix>
+    Identifiability identifiability(const Matrix &J)
+    {
+      const Eigen::Index p = J.cols();
+      Identifiability id;
+      id.column_norm = J.colwise().norm().transpose();
+      Eigen::MatrixXd unit = J;
+      for (Eigen::Index j = 0; j < p; ++j)
+        if (id.column_norm(j) > 0)
+          unit.col(j) /= id.column_norm(j);
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(unit, Eigen::ComputeFullV);
+      id.singular_values = svd.singularValues();
+      id.directions = svd.matrixV();
+      id.identifiable.assign(std::size_t(p), true);
+      for (Eigen::Index k = 0; k < id.singular_values.size(); ++k)
+        if (!(id.singular_values(k) >= 1e-6 * id.singular_values(0)) || id.singular_values(k) == 0)
+          {
+            id.lost.push_back(k);
+            for (Eigen::Index j = 0; j < p; ++j)
+              if (std::abs(id.directions(j, k)) > 0.1)
+                id.identifiable[std::size_t(j)] = false;
+          }
+      for (Eigen::Index k = id.singular_values.size(); k < p; ++k) // fewer values than parameters
+        id.lost.push_back(k);
+      id.rank = std::size_t(p) - id.lost.size();
+      return id;
+    }
+
+    /// The combinations of the not-identifiable parameters orthogonal to the lost directions
+    /// (restricted to them): what the data determine of them, with the standard error from the
+    /// pseudo-inverse of the Jacobian's normal matrix (the lost directions left out), times the
+    /// residuals' variance `variance' where sigma is estimated.
+    std::vector<DeterminedCombination> determined_combinations(const Identifiability &id,
+                                                               const std::vector<FreeParameter> &parameters,
+                                                               const std::vector<double> &scale,
+                                                               const std::vector<double> &estimates, double variance)
+    {
+      std::vector<Eigen::Index> group; // not identifiable, but acting on the data
+      for (std::size_t j = 0; j < parameters.size(); ++j)
+        if (!id.identifiable[j] && id.column_norm(Eigen::Index(j)) > 0)
+          group.push_back(Eigen::Index(j));
+      if (group.empty())
+        return {};
+      const Eigen::Index g = Eigen::Index(group.size()), p = id.directions.rows();
+      Eigen::MatrixXd lost(g, Eigen::Index(id.lost.size()));
+      for (Eigen::Index a = 0; a < g; ++a)
+        for (Eigen::Index b = 0; b < lost.cols(); ++b)
+          lost(a, b) = id.lost[std::size_t(b)] < p ? id.directions(group[std::size_t(a)], id.lost[std::size_t(b)]) : 0.0;
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(lost, Eigen::ComputeFullU);
+      Eigen::Index lost_rank = 0;
+      for (Eigen::Index k = 0; k < svd.singularValues().size(); ++k)
+        lost_rank += svd.singularValues()(k) > 1e-8;
+      // (J^T J)^+ in unit-column coordinates w_j = |J_j| x_j
+      Eigen::MatrixXd inverse = Eigen::MatrixXd::Zero(p, p);
+      for (Eigen::Index k = 0; k < id.singular_values.size(); ++k)
+        if (std::find(id.lost.begin(), id.lost.end(), k) == id.lost.end())
+          inverse += id.directions.col(k) * id.directions.col(k).transpose() /
+                     (id.singular_values(k) * id.singular_values(k));
+      std::vector<DeterminedCombination> combinations;
+      for (Eigen::Index c = lost_rank; c < g; ++c)
+        {
+          // a^T w with a on the group; value_j = start_j + scale_j w_j/|J_j| gives the physical
+          // coefficients a_j |J_j|/scale_j, normalised to 1 on the largest of them
+          Eigen::VectorXd a = Eigen::VectorXd::Zero(p), physical(g);
+          for (Eigen::Index k = 0; k < g; ++k)
+            {
+              a(group[std::size_t(k)]) = svd.matrixU()(k, c);
+              physical(k) = svd.matrixU()(k, c) * id.column_norm(group[std::size_t(k)]) / scale[std::size_t(group[std::size_t(k)])];
+            }
+          Eigen::Index first = 0;
+          physical.cwiseAbs().maxCoeff(&first);
+          const double norm = physical(first);
+          DeterminedCombination d;
+          d.unit = parameters[std::size_t(group[std::size_t(first)])].unit;
+          d.estimate = 0;
+          for (Eigen::Index k = 0; k < g; ++k)
+            {
+              const std::size_t j = std::size_t(group[std::size_t(k)]);
+              d.paths.push_back(parameters[j].path);
+              d.coefficients.push_back(physical(k) / norm);
+              d.estimate += d.coefficients.back() * estimates[j];
+            }
+          a /= norm;
+          d.standard_error = std::sqrt(std::max(0.0, variance * a.dot(inverse * a)));
+          combinations.push_back(d);
+        }
+      return combinations;
+    }
   } // namespace
+
+  std::string DeterminedCombination::text() const
+  {
+    std::string t;
+    for (std::size_t k = 0; k < paths.size(); ++k)
+      {
+        const double c = coefficients[k];
+        t += (k == 0 ? (c < 0 ? "-" : "") : (c < 0 ? " - " : " + "));
+        if (std::abs(std::abs(c) - 1) > 1e-9)
+          t += format_number(std::abs(c)) + " x ";
+        t += "`" + paths[k] + "'";
+      }
+    return t;
+  }
 
   CalibrationSetup prepare_calibration(const CalibrationRequest &request, const StageTables &tables)
   {
@@ -196,8 +330,13 @@ namespace servodrift::system
     const std::size_t n = setup.data.points.size(), p = setup.parameters.size();
     const CalibrationModel model(request, setup.parameters, tables);
     r.sigma_estimated = !setup.data.standard_deviations_given;
+    // Without standard deviations the points share one unknown sigma (one quantity): any common
+    // weight gives the same fit, but Ceres' gradient tolerance is absolute, so residuals in SI
+    // units (amperes) would stop it early. A first estimate of sigma, the measured values' own
+    // size, makes the residuals O(1) and the solver's tolerances relative.
+    const double first_sigma = r.sigma_estimated ? data_scale(model, setup) : 1.0;
     for (const auto &m : setup.data.points)
-      r.weights.push_back(r.sigma_estimated ? 1.0 : m.standard_deviation);
+      r.weights.push_back(r.sigma_estimated ? first_sigma : m.standard_deviation);
 
     // scaled parameters: value = initial + scale x, scale a thousandth of the range or the value
     std::vector<double> scale, lower, upper;
@@ -243,52 +382,39 @@ namespace servodrift::system
       if (!residuals->Evaluate(parameters, res.data(), jacobians))
         throw std::runtime_error("calibrate: the model fails at the estimate");
     }
-    r.degrees_of_freedom = n - p;
-    r.chi_square = res.squaredNorm();
     const std::vector<double> fit_sigma = r.weights;
-    const double s2 = r.degrees_of_freedom > 0 ? r.chi_square / double(r.degrees_of_freedom) : 0.0;
-    r.reduced_chi_square = s2;
+    const Identifiability id = identifiability(J);
+    r.rank = id.rank;
+    r.degrees_of_freedom = n - id.rank;
+    const double s2 = r.degrees_of_freedom > 0 ? res.squaredNorm() / double(r.degrees_of_freedom) : 0.0;
+    // with sigma estimated, chi-square and its reduced value are in SI units squared: the latter
+    // is the residuals' variance that the intervals assume
+    const double unit_square = first_sigma * first_sigma;
+    r.chi_square = res.squaredNorm() * unit_square;
+    r.reduced_chi_square = s2 * unit_square;
     if (r.sigma_estimated) // one quantity without standard deviations: sigma = the residuals' scatter
       for (double &w : r.weights)
-        w = std::sqrt(s2);
+        w = std::sqrt(s2) * first_sigma;
 
-    // Identifiability: singular values of the Jacobian with unit columns (scale-free). A direction
-    // with a relative singular value below 1e-6 changes the fit less than 1e-12 of the others: the
-    // data cannot tell those parameters apart (or do not depend on one at all).
-    std::vector<bool> identifiable(p, true);
-    {
-      Eigen::MatrixXd unit = J;
-      for (std::size_t j = 0; j < p; ++j)
-        {
-          const double norm = J.col(j).norm();
-          if (norm == 0)
-            identifiable[j] = false;
-          else
-            unit.col(j) /= norm;
-        }
-      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(unit, Eigen::ComputeFullV);
-      const auto &sv = svd.singularValues();
-      for (Eigen::Index k = 0; k < sv.size(); ++k)
-        if (sv(k) < 1e-6 * sv(0))
-          for (std::size_t j = 0; j < p; ++j)
-            if (std::abs(svd.matrixV()(j, k)) > 0.1)
-              identifiable[j] = false;
-    }
     std::vector<int> constant;
     for (std::size_t j = 0; j < p; ++j)
-      if (!identifiable[j])
+      if (!id.identifiable[j])
         {
           constant.push_back(int(j));
           r.not_identifiable.push_back(setup.parameters[j].path);
         }
+    r.determined = determined_combinations(id, setup.parameters, scale, r.estimates, r.sigma_estimated ? s2 : 1.0);
     if (!r.not_identifiable.empty())
       {
-        std::string list;
+        std::string list, determined;
         for (const auto &path : r.not_identifiable)
           list += (list.empty() ? "`" : ", `") + path + "'";
+        for (const auto &c : r.determined)
+          determined += (determined.empty() ? "; the data determine " : " and ") + c.text() + " = " +
+                        format_number(c.estimate) + " +- " + format_number(c.standard_error) + " " + c.unit;
         r.warnings.push_back("the data cannot tell apart (or do not depend on) " + list +
-                             ": their estimates are one of many that fit equally, without standard errors; "
-                             "fix all but one or add measurements that separate them");
+                             ": their estimates are one of many that fit equally, without standard errors" +
+                             determined + "; fix all but one or add measurements that separate them");
       }
 
     // Covariance of the identifiable ones (Ceres, dense SVD), the others held constant
@@ -317,7 +443,7 @@ namespace servodrift::system
     for (std::size_t j = 0; j < p; ++j)
       {
         r.correlation[j][j] = 1;
-        if (!identifiable[j])
+        if (!id.identifiable[j])
           {
             r.standard_errors.push_back(std::nullopt);
             r.intervals.push_back(std::nullopt);
@@ -327,7 +453,7 @@ namespace servodrift::system
         r.standard_errors.push_back(se);
         r.intervals.push_back(Interval{r.estimates[j] - r.interval_factor * se, r.estimates[j] + r.interval_factor * se});
         for (std::size_t k = 0; k < p; ++k)
-          if (k != j && identifiable[k] && C(j, j) > 0 && C(k, k) > 0)
+          if (k != j && id.identifiable[k] && C(j, j) > 0 && C(k, k) > 0)
             r.correlation[j][k] = C(j, k) / std::sqrt(C(j, j) * C(k, k));
       }
     for (std::size_t j = 0; j < p; ++j)

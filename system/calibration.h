@@ -47,6 +47,18 @@ namespace servodrift::system
     std::vector<double> temperatures, values, standard_deviations; ///< [degC], SI
   };
 
+  /// A combination of entries the data cannot tell apart that they do determine (the direction of
+  /// the fit orthogonal to the one they cannot see): sum_j coefficient_j x entry_j, the largest
+  /// coefficient +-1, in the unit of its entry.
+  struct DeterminedCombination
+  {
+    std::vector<std::string> paths;
+    std::vector<double> coefficients;
+    std::string unit;
+    double estimate, standard_error;
+    std::string text() const; ///< "`A' - 1.002 x `B'"
+  };
+
   struct CalibrationResults
   {
     CalibrationRequest request;
@@ -60,9 +72,11 @@ namespace servodrift::system
     std::vector<double> model_standard_deviation;       ///< from the parameters' covariance, SI
     std::vector<double> weights;                        ///< the sigma of each point, SI (given or estimated)
     double chi_square, reduced_chi_square;
-    std::size_t degrees_of_freedom;
+    std::size_t degrees_of_freedom;                     ///< values - rank of the Jacobian
+    std::size_t rank;                                   ///< directions the data determine
     bool sigma_estimated;                               ///< no standard deviations in the file
     std::vector<std::string> not_identifiable;          ///< paths the data cannot tell apart
+    std::vector<DeterminedCombination> determined;      ///< what the data do determine of them
     std::vector<std::string> warnings;
     std::string termination;                            ///< Ceres' report, one line
     int iterations;

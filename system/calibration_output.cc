@@ -63,6 +63,21 @@ namespace servodrift::system
           .set("identifiable", bool(r.standard_errors[j]));
         estimates.push_back(e);
       }
+    Json determined = Json::array();
+    for (const auto &c : r.determined)
+      {
+        Json terms = Json::array();
+        for (std::size_t k = 0; k < c.paths.size(); ++k)
+          {
+            Json t = Json::object();
+            t.set("entry", c.paths[k]).set("coefficient", c.coefficients[k]);
+            terms.push_back(t);
+          }
+        Json e = Json::object();
+        e.set("combination", c.text()).set("terms", terms).set("unit", c.unit).set("estimate", c.estimate)
+          .set("standard_error", c.standard_error);
+        determined.push_back(e);
+      }
     Json correlation = Json::array();
     for (const auto &row : r.correlation)
       correlation.push_back(Json(row));
@@ -79,7 +94,9 @@ namespace servodrift::system
       .set("degrees_of_freedom", r.degrees_of_freedom)
       .set("reduced_chi_square", r.reduced_chi_square)
       .set("sigma_estimated_from_the_fit", r.sigma_estimated)
+      .set("rank", r.rank)
       .set("not_identifiable", r.not_identifiable)
+      .set("determined_combinations", determined)
       .set("warnings", r.warnings)
       .set("iterations", r.iterations)
       .set("solver", r.termination);
@@ -160,6 +177,17 @@ namespace servodrift::system
           << " | " << (r.standard_errors[j] ? format_number(*r.standard_errors[j]) : "not identifiable") << " | "
           << (r.intervals[j] ? format_number(r.intervals[j]->lower) + " to " + format_number(r.intervals[j]->upper) : "-")
           << " | " << params[j].unit << " |\n";
+    if (!r.determined.empty())
+      {
+        out << "\nWhat the data determine of the entries they cannot tell apart:\n\n"
+            << "| combination | estimate | standard error | unit |\n|---|---:|---:|---|\n";
+        for (const auto &c : r.determined)
+          out << "| " << c.text() << " | " << format_number(c.estimate) << " | " << format_number(c.standard_error)
+              << " | " << c.unit << " |\n";
+      }
+    out << "\nThe data determine " << r.rank << " of " << params.size() << " directions of the " << params.size()
+        << " free entries; " << r.setup.data.points.size() << " values, " << r.degrees_of_freedom
+        << " degrees of freedom.\n";
     if (r.sigma_estimated)
       out << "\nThe residuals' standard deviation, sqrt(chi-square/" << r.degrees_of_freedom << "), is "
           << format_number(std::sqrt(r.reduced_chi_square)) << " " << si_unit(r.setup.data.points.front().quantity)

@@ -73,6 +73,17 @@ namespace
     return path;
   }
 
+  /// The same for the null-shift current alone, without standard deviations (sigma then estimated).
+  std::string write_measured_without_sd(const std::vector<Measurement> &points, const std::vector<double> &y)
+  {
+    const std::string path = test::temporary_directory() + "/measured.csv";
+    std::ofstream out(path);
+    out << "# synthetic, no standard deviations\ntemperature[degC],current[mA],null_shift_current[mA]\n";
+    for (std::size_t k = 0; k < points.size(); ++k)
+      out << points[k].temperature << "," << 1e3 * points[k].current << "," << std::setprecision(17) << 1e3 * y[k] << "\n";
+    return path;
+  }
+
   CalibrationRequest request(const std::string &measured, const std::vector<std::string> &free,
                              const std::vector<std::string> &start = {})
   {
@@ -113,6 +124,27 @@ TEST(Calibration, NoiseFreeDataGiveTheTruth)
   EXPECT_LT(c.chi_square, 1e-10);
   EXPECT_TRUE(c.not_identifiable.empty());
   EXPECT_FALSE(c.sigma_estimated);
+}
+
+// The same without standard deviations in the file: the residuals are scaled by a first estimate of
+// sigma (the data's own size), so the solver's tolerances are relative and it does not stop on its
+// absolute gradient tolerance with residuals of microamperes; the truth comes back to 1e-6.
+TEST(Calibration, NoiseFreeDataWithoutStandardDeviationsGiveTheTruth)
+{
+  const auto points = bench_points(false);
+  const std::string file = write_measured_without_sd(points, truth_values(two_free, two_truth, points));
+  const CalibrationRequest r = request(file, two_free);
+  const CalibrationSetup setup = prepare_calibration(r, bench().tables);
+  const CalibrationResults c = calibrate(r, setup, bench().tables);
+  ASSERT_TRUE(c.sigma_estimated);
+  for (std::size_t j = 0; j < 2; ++j)
+    {
+      RecordProperty("relative_error_" + std::to_string(j), test::number(relative(c.estimates[j], two_truth[j])));
+      EXPECT_LT(relative(c.estimates[j], two_truth[j]), 1e-6) << j << " " << c.termination;
+    }
+  EXPECT_EQ(c.rank, 2u);
+  EXPECT_EQ(c.degrees_of_freedom, points.size() - 2);
+  EXPECT_LT(std::sqrt(c.reduced_chi_square), 1e-6 * 1e-3); // A: the residuals' scatter, far below a microampere
 }
 
 // With Gaussian noise of the stated standard deviations the estimates lie within 2 standard errors
@@ -165,8 +197,20 @@ TEST(Calibration, IdenticalParametersAreNotIdentifiable)
   EXPECT_FALSE(c.standard_errors[1]);
   ASSERT_FALSE(c.warnings.empty());
   EXPECT_NE(c.warnings.front().find("cannot tell apart"), std::string::npos) << c.warnings.front();
-  // what the data do determine, the mean, is found
+  // what the data do determine, the mean, is found and reported as the combination left + right
   EXPECT_NEAR(0.5 * (c.estimates[0] + c.estimates[1]), 0.01, 1e-6);
+  ASSERT_EQ(c.determined.size(), 1u);
+  const DeterminedCombination &sum = c.determined.front();
+  ASSERT_EQ(sum.coefficients.size(), 2u);
+  EXPECT_NEAR(sum.coefficients[0], sum.coefficients[1], 1e-6);
+  EXPECT_NEAR(std::abs(sum.coefficients[0]), 1.0, 1e-12);
+  EXPECT_NEAR(sum.estimate / sum.coefficients[0], 0.02, 2e-6);
+  EXPECT_GT(sum.standard_error, 0.0);
+  EXPECT_LT(sum.standard_error, 1e-3); // the sum is well determined by 16 values
+  EXPECT_NE(c.warnings.front().find("the data determine"), std::string::npos) << c.warnings.front();
+  // the lost direction is not a degree of freedom: values - rank
+  EXPECT_EQ(c.rank, 1u);
+  EXPECT_EQ(c.degrees_of_freedom, points.size() - 1);
 }
 
 // The D9 deviations the calibration can fit are the drift map's: a valve with theta_m = 0.01 deg,
