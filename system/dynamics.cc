@@ -65,18 +65,7 @@ namespace servodrift::system
       if (slowest_decay_rate(l) <= 0)
         return std::nullopt;
       const auto &p = model.description().dynamics;
-      const double rated = model.description().operating.rated_current;
-      SineCheck c;
-      c.frequency = f;
-      for (std::size_t k = 0; k < 3; ++k)
-        {
-          c.linear[k] = transfer(l, sine_outputs[k], f);
-          c.dc_gain[k] = transfer(l, sine_outputs[k], 0.0);
-        }
-      const double a = linear_amplitude(dynamics, l, point.state(), f, p.sine_check_amplitude * rated, p.linearity_margin);
-      c.at_amplitude = sine_response(dynamics, l, point.state(), bias, f, a, p);
-      c.at_half = sine_response(dynamics, l, point.state(), bias, f, a / 2, p);
-      return c;
+      return sine_check(dynamics, l, point.state(), bias, f, p.sine_check_amplitude * model.description().operating.rated_current, p);
     }
 
     /// The large-signal study at one amplitude: the sine frequencies swept up, each starting from the

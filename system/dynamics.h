@@ -20,16 +20,6 @@
 
 namespace servodrift::system
 {
-  /// The small-signal sine at one frequency, at the chosen amplitude and at half of it, beside the
-  /// linearisation.
-  struct SineCheck
-  {
-    double frequency = 0;                            ///< [Hz]
-    std::array<std::complex<double>, 3> linear{};    ///< H of p_B, x_v, x_f (sine_outputs) [unit/A]
-    std::array<std::complex<double>, 3> dc_gain{};   ///< H(0) of the same, the reference of every dB [unit/A]
-    SineResponse at_amplitude, at_half;
-  };
-
   struct TemperatureDynamics
   {
     double temperature = 0;  ///< [degC]

@@ -137,8 +137,12 @@ namespace servodrift::system
     void sine_responses(const ValveDescription &valve, const DynamicsResults &r, const std::string &dir)
     {
       CsvDocument doc = document(valve, "sine_response",
-                                 "nonlinear sine responses about the bias: check = the small-signal amplitude, "
-                                 "check-half = half of it, study-up and study-down = `Dynamics/Sine amplitudes' with "
+                                 "nonlinear sine responses about the bias: check = the small-signal sine the "
+                                 "linearity check takes (the smallest amplitude of its halvings), check-halving = the "
+                                 "larger amplitudes halved down to it (until halving moves p_B's first harmonic by at "
+                                 "most " + format_number(SineCheckLimits::halving_fraction * SineCheckLimits::decibel) +
+                                 " dB and " + format_number(SineCheckLimits::halving_fraction * SineCheckLimits::degree) +
+                                 " deg, or " + std::to_string(SineCheckLimits::halvings) + " halvings), study-up and study-down = `Dynamics/Sine amplitudes' with "
                                  "the frequencies swept up and down, each starting from its neighbour's periodic "
                                  "state; first harmonics over the input's, amplitude in dB relative to the linear DC "
                                  "gain of each output");
@@ -167,8 +171,9 @@ namespace servodrift::system
                    cell(s.minimum[0]), cell(s.maximum[0]), cell(s.minimum[1]), cell(s.maximum[1]), flag(s.flapper_contact),
                    flag(s.beyond_lap), flag(s.spool_on_stop), flag(s.left_tables)});
               };
-              row("check", c.at_amplitude);
-              row("check-half", c.at_half);
+              for (std::size_t k = 0; k + 1 < c.halvings.size(); ++k)
+                row("check-halving", c.halvings[k]);
+              row(c.linear_limit ? "check" : "check-not-at-linear-limit", c.taken());
               if (d.sine_study.empty()) // the study ran at other temperatures
                 continue;
               for (const SineResponse &s : d.sine_study[j])

@@ -174,6 +174,47 @@ namespace servodrift::system
                   mode_plot(names, 3) + "unset multiplot\n"},
     };
     std::vector<Plot> all = plots;
+    // the small-signal check at the temperature nearest T0 that has one: the linear response, the
+    // nonlinear first harmonic of each point, labelled with the amplitude it was taken at
+    std::size_t checked = r.temperatures.size();
+    for (std::size_t k = 0; k < r.temperatures.size(); ++k)
+      if (!r.temperatures[k].sine_checks.empty() &&
+          (checked == r.temperatures.size() ||
+           std::abs(r.temperatures[k].temperature - valve.operating.reference_temperature) <
+             std::abs(r.temperatures[checked].temperature - valve.operating.reference_temperature)))
+        checked = k;
+    if (checked < r.temperatures.size())
+      {
+        const auto &dc = r.temperatures[checked];
+        std::ostringstream points, labels;
+        points << "# " << dc.temperature << " degC: frequency[Hz] brake_pressure_amplitude[dB re DC] "
+               << "brake_pressure_phase[deg] amplitude_taken[% of rated]; then the linear response\n";
+        for (const auto &check : dc.sine_checks)
+          {
+            const auto &s = check.taken();
+            const double amplitude = decibel(s.gain[0] / check.dc_gain[0]);
+            points << c(check.frequency) << ' ' << c(amplitude) << ' '
+                   << c(linear_phase(dc.brake_pressure, check.frequency, check.linear[0]) + degrees(s.gain[0] / check.linear[0]))
+                   << ' ' << c(100 * s.amplitude / valve.operating.rated_current) << '\n';
+            labels << "set label '" << c(100 * s.amplitude / valve.operating.rated_current) << " %" << (check.linear_limit ? "" : "*")
+                   << "' at " << c(check.frequency) << "," << c(amplitude) << " offset 0.5,0.8 font ',8'\n";
+          }
+        points << "\n\n# linear\n";
+        for (std::size_t j = 0; j < dc.brake_pressure.frequencies.size(); ++j)
+          points << c(dc.brake_pressure.frequencies[j]) << ' ' << c(dc.brake_pressure.amplitude_db[j]) << ' '
+                 << c(dc.brake_pressure.phase_degrees[j]) << '\n';
+        write_file_atomically(dir + "/sine_check.dat", points.str());
+        all.push_back({"sine_check",
+                       "set multiplot layout 2,1 title 'Small-signal check at " + c(dc.temperature) +
+                         " degC: nonlinear first harmonic at the amplitude taken [% of rated] against the linearisation'\n"
+                         "set logscale x\nset grid\nset key top right\nset ylabel 'p_B amplitude [dB re DC]'\n" +
+                         labels.str() +
+                         "plot 'sine_check.dat' index 1 using 1:2 with lines lc 'black' title 'linear', '' index 0 "
+                         "using 1:2 with points pt 7 lc 'blue' title 'nonlinear'\nunset label\n"
+                         "set xlabel 'frequency [Hz]'\nset ylabel 'phase [deg]'\n"
+                         "plot 'sine_check.dat' index 1 using 1:3 with lines lc 'black' title 'linear', '' index 0 "
+                         "using 1:3 with points pt 7 lc 'blue' title 'nonlinear'\nunset multiplot\n"});
+      }
     if (sine_plot)
       all.push_back(
       {"sine_amplitude_study",

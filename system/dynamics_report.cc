@@ -45,12 +45,14 @@ namespace servodrift::system
       out << "\n";
     }
 
-    void checks(std::ostream &out, const DynamicsResults &r)
+    void checks(std::ostream &out, const ValveDescription &valve, const DynamicsResults &r)
     {
+      const double rated = valve.operating.rated_current;
       // an unstable bias point has no steady state to settle on and no linear frequency response to
       // compare with: those checks are made at the stable temperatures
       double armature = 0, tau = 0, drift = 0, rest = 0, worst_db = 0, worst_deg = 0, halving_db = 0, halving_deg = 0;
-      std::string skipped;
+      double smallest = 1e300, largest = 0;
+      std::string skipped, not_linear;
       for (const auto &d : r.temperatures)
         {
           armature = std::max(armature, std::abs(d.checks.armature_blocked / d.checks.armature_closed_form - 1));
@@ -64,11 +66,15 @@ namespace servodrift::system
           rest = std::max(rest, d.steady.distance_from_rest);
           for (const auto &c : d.sine_checks)
             {
-              const auto h = c.at_amplitude.gain[0] / c.linear[0], g = c.at_half.gain[0] / c.at_amplitude.gain[0];
+              const auto h = c.taken().gain[0] / c.linear[0], g = c.last_halving();
               worst_db = std::max(worst_db, std::abs(decibel(h)));
               worst_deg = std::max(worst_deg, std::abs(degrees(h)));
               halving_db = std::max(halving_db, std::abs(decibel(g)));
               halving_deg = std::max(halving_deg, std::abs(degrees(g)));
+              smallest = std::min(smallest, c.taken().amplitude);
+              largest = std::max(largest, c.taken().amplitude);
+              if (!c.linear_limit)
+                not_linear += (not_linear.empty() ? "" : ", ") + fmt(c.frequency) + " Hz at " + fmt(d.temperature) + " degC";
             }
         }
       const auto verdict = [](bool pass) { return pass ? " (pass)" : " (**fail**)"; };
@@ -93,11 +99,47 @@ namespace servodrift::system
              "the linearisation, V/(beta_e dQ/dp) = " << fmt(1e3 * first.pressure_time_constant_tables)
           << " ms with the tables' slopes (largest difference " << fmt(100 * tau, 2) << " %), "
           << fmt(1e3 * first.pressure_time_constant_closed_form) << " ms for turbulent orifices (Q ~ sqrt(dp)).\n"
-          << "- small-signal sine against the linearisation: largest difference " << fmt(worst_db, 2) << " dB and "
-          << fmt(worst_deg, 2) << " deg (required 0.5 dB, 3 deg)" << verdict(worst_db < 0.5 && worst_deg < 3)
-          << "; halving the amplitude moves the response by " << fmt(halving_db, 2) << " dB and " << fmt(halving_deg, 2)
-          << " deg at most. The amplitude is chosen per frequency so that the linear excursion of spool and flapper "
-             "stays within `Dynamics/Linearity margin` of the distance to their nearest edge.\n\n";
+          << "- small-signal sine against the linearisation, at the linear limit: largest difference " << fmt(worst_db, 2)
+          << " dB and " << fmt(worst_deg, 2) << " deg (required " << fmt(SineCheckLimits::decibel) << " dB, "
+          << fmt(SineCheckLimits::degree) << " deg)"
+          << verdict(worst_db < SineCheckLimits::decibel && worst_deg < SineCheckLimits::degree && not_linear.empty())
+          << ". Each point starts at the largest amplitude whose linear excursion of spool and flapper stays within "
+             "`Dynamics/Linearity margin` of the distance to their nearest edge, and halves it until halving moves "
+             "the response by at most "
+          << fmt(SineCheckLimits::halving_fraction * SineCheckLimits::decibel) << " dB and "
+          << fmt(SineCheckLimits::halving_fraction * SineCheckLimits::degree) << " deg (the last halving moved it by "
+          << fmt(halving_db, 2) << " dB and " << fmt(halving_deg, 2) << " deg at most); the points were taken at "
+          << fmt(100 * smallest / rated, 3) << " to " << fmt(100 * largest / rated, 3)
+          << " % of rated (each point's amplitude: `system/sine_response.csv`, kind `check`; plot `sine_check`)"
+          << (not_linear.empty() ? std::string(".") :
+                                   ". **Not at the linear limit** after " + std::to_string(SineCheckLimits::halvings) +
+                                     " halvings: " + not_linear + ".")
+          << "\n\n";
+    }
+
+    /// The amplitude at which each small-signal point was taken, and the halvings it took.
+    void amplitudes_taken(std::ostream &out, const ValveDescription &valve, const DynamicsResults &r)
+    {
+      const auto &f = valve.dynamics.sine_frequencies;
+      out << "Amplitude of each small-signal point [% of rated] (halvings from the first amplitude; * not at the "
+             "linear limit):\n\n| T [degC] |";
+      for (double x : f)
+        out << " " << fmt(x) << " Hz |";
+      out << "\n|---:|";
+      for (std::size_t j = 0; j < f.size(); ++j)
+        out << "---:|";
+      out << "\n";
+      for (const auto &d : r.temperatures)
+        {
+          if (d.sine_checks.empty())
+            continue;
+          out << "| " << fmt(d.temperature) << " |";
+          for (const auto &c : d.sine_checks)
+            out << " " << fmt(100 * c.taken().amplitude / valve.operating.rated_current, 3) << " ("
+                << c.halvings.size() - 1 << ")" << (c.linear_limit ? "" : " *") << " |";
+          out << "\n";
+        }
+      out << "\n";
     }
 
     void study(std::ostream &out, const ValveDescription &valve, const DynamicsResults &r)
@@ -192,7 +234,8 @@ namespace servodrift::system
           out << "**Unstable at " << fmt(d.temperature) << " degC:** the " << m.name << " mode (" << fmt(m.natural_frequency)
               << " Hz) grows at " << fmt(m.eigenvalue.real()) << " 1/s: the valve oscillates about the bias instead of "
                  "settling on it, so its bandwidth and step figures there describe that oscillation.\n\n";
-    checks(out, r);
+    checks(out, valve, r);
+    amplitudes_taken(out, valve, r);
     study(out, valve, r);
     if (!r.fixed_time.empty())
       {

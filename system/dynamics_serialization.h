@@ -105,7 +105,7 @@ namespace boost::serialization
   template <class Archive>
   void serialize(Archive &a, servodrift::system::SineCheck &c, unsigned int)
   {
-    a &c.frequency &c.linear &c.dc_gain &c.at_amplitude &c.at_half;
+    a &c.frequency &c.linear &c.dc_gain &c.halvings &c.linear_limit;
   }
 
   template <class Archive>

@@ -91,6 +91,31 @@ namespace servodrift::system
     return std::min({largest, spool_room / spool, flapper_room / flapper});
   }
 
+  SineCheck sine_check(const ValveDynamics &dynamics, const Linearisation &l, const ValveState &bias_point,
+                       double bias, double f, double largest, const DynamicsParameters &p)
+  {
+    SineCheck c;
+    c.frequency = f;
+    for (std::size_t k = 0; k < 3; ++k)
+      {
+        c.linear[k] = transfer(l, sine_outputs[k], f);
+        c.dc_gain[k] = transfer(l, sine_outputs[k], 0.0);
+      }
+    double a = linear_amplitude(dynamics, l, bias_point, f, largest, p.linearity_margin);
+    c.halvings.push_back(sine_response(dynamics, l, bias_point, bias, f, a, p));
+    using limits = SineCheckLimits;
+    for (unsigned int k = 0; k < limits::halvings && !c.linear_limit; ++k)
+      {
+        a /= 2;
+        c.halvings.push_back(sine_response(dynamics, l, bias_point, bias, f, a, p));
+        const std::complex<double> move = c.last_halving();
+        c.linear_limit = c.halvings.back().periodic && c.halvings[c.halvings.size() - 2].periodic &&
+                         std::abs(20 * std::log10(std::abs(move))) <= limits::halving_fraction * limits::decibel &&
+                         std::abs(std::arg(move)) / units::degree <= limits::halving_fraction * limits::degree;
+      }
+    return c;
+  }
+
   SineResponse sine_response(const ValveDynamics &dynamics, const Linearisation &l, const ValveState &bias_point,
                              double bias, double f, double a, const DynamicsParameters &p,
                              const std::vector<double> *start)

@@ -48,6 +48,40 @@ namespace servodrift::system
                              const ValveState &bias_point, double bias, double frequency, double amplitude,
                              const DynamicsParameters &parameters, const std::vector<double> *start = nullptr);
 
+  /// The small-signal sine check: the nonlinear first harmonic of p_B against the linearisation,
+  /// within these limits, at an amplitude where halving it moves that harmonic by at most
+  /// `halving_fraction' of them (the linear limit: what remains of the difference is not the
+  /// amplitude's). A first-harmonic departure of a smooth nonlinearity falls as the amplitude
+  /// squared, so each halving cuts it to a quarter; `halvings' bounds how far the amplitude goes.
+  struct SineCheckLimits
+  {
+    static constexpr double decibel = 0.5, degree = 3, halving_fraction = 0.1;
+    static constexpr unsigned int halvings = 8;
+  };
+
+  /// The small-signal sine at one frequency: at the largest amplitude whose linear excursion stays
+  /// within `Dynamics/Linearity margin' of the edges, then halved until the linear limit, beside
+  /// the linearisation.
+  struct SineCheck
+  {
+    double frequency = 0;                            ///< [Hz]
+    std::array<std::complex<double>, 3> linear{};    ///< H of p_B, x_v, x_f (sine_outputs) [unit/A]
+    std::array<std::complex<double>, 3> dc_gain{};   ///< H(0) of the same, the reference of every dB [unit/A]
+    std::vector<SineResponse> halvings;              ///< the amplitude and each half of it, in order
+    bool linear_limit = false; ///< the last halving moved p_B's first harmonic within the fraction
+    /// The response the check takes: at the smallest amplitude
+    const SineResponse &taken() const { return halvings.back(); }
+    /// p_B's first harmonic at the taken amplitude over the one before it (1 if none)
+    std::complex<double> last_halving() const
+    {
+      return halvings.size() > 1 ? halvings.back().gain[0] / halvings[halvings.size() - 2].gain[0] : 1.0;
+    }
+  };
+
+  /// The check at frequency f about the bias point (stable there), by SineCheckLimits.
+  SineCheck sine_check(const ValveDynamics &dynamics, const Linearisation &linearisation, const ValveState &bias_point,
+                       double bias, double frequency, double largest_amplitude, const DynamicsParameters &parameters);
+
   /// The largest amplitude, up to `largest', whose linear response keeps the spool and the flapper
   /// within `margin' of the distance from the bias to their nearest edge (lap edges, stops, nozzles).
   double linear_amplitude(const ValveDynamics &dynamics, const Linearisation &linearisation,
