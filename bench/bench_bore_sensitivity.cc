@@ -71,7 +71,7 @@ int main(int argc, char **argv)
   const double delta = argc > 2 ? std::atof(argv[2]) : 2e-6;
   const std::string out = argc > 3 ? argv[3] : (std::filesystem::temp_directory_path() / "servodrift-bench-bores").string();
 
-  const ValveDescription nominal = valve(level, out + "/nominal", {});
+  const ValveDescription nominal = valve(level, out + "/nominal", {"Pilot stage/Bore sensitivity=on"});
   const double d0 = nominal.pilot.fixed_orifice_diameter, dN = nominal.pilot.nozzle_diameter;
   // the left side's tables at each bore: orifice +delta, -delta, nozzle +delta, -delta
   std::vector<ValveDescription> sides;
@@ -83,7 +83,9 @@ int main(int argc, char **argv)
     {
       // tables a previous run left in the same directory for the same description are reused
       const std::string tables = tables_directory(*v);
-      bool reuse = std::filesystem::exists(tables + "/nozzle_flapper.csv");
+      bool reuse = std::filesystem::exists(tables + "/nozzle_flapper.csv") &&
+                   (v->pilot.bore_sensitivity != PilotStageParameters::BoreSensitivity::on ||
+                    std::filesystem::exists(tables + "/nozzle_flapper_bore.csv"));
       if (reuse)
         {
           const StageTables t = StageTables::read(tables, *v);
@@ -95,19 +97,26 @@ int main(int argc, char **argv)
       structure::run(*v);
       flow::run(*v);
     }
-  const ValveModel model(nominal, StageTables::read(tables_directory(nominal), nominal));
+  // the nominal tables with their bore tables, and without (the closed forms' ratio stands in)
+  const StageTables with_bore_tables = StageTables::read(tables_directory(nominal), nominal);
+  StageTables without = with_bore_tables;
+  without.fixed_orifice_bore.reset();
+  without.nozzle_flapper_bore.reset();
+  const ValveModel model(nominal, with_bore_tables), closed_forms(nominal, without);
   const double rated = 0.02, per_um = 1e-6 / rated * 100;
 
   std::ostringstream csv;
-  csv << "# null shift per micrometre of the left bore: by the closed forms' ratio on the nominal tables "
-         "vs the left side's tables recomputed at that bore (pilot stage: "
+  csv << "# null shift per micrometre of the left bore: by the bore tables (step `Pilot stage/Bore sensitivity "
+         "step') and by the closed forms' ratio on the nominal tables, against the left side's tables recomputed at "
+         "that bore (pilot stage: "
       << level << "; forward differences over +-" << delta << " m, and their central difference)\n"
-      << "bore,temperature[degC],step[m],by_closed_forms[%rated/um],by_tables_at_the_bore[%rated/um],relative_error[1]\n";
+      << "bore,temperature[degC],step[m],by_tables_at_the_bore[%rated/um],by_bore_tables[%rated/um],"
+         "bore_tables_error[1],by_closed_forms[%rated/um],closed_forms_error[1]\n";
   for (const bool orifice : {true, false})
     for (const double T : {80.0, 120.0})
       {
-        const double base = null_shift(model, {}, T, nullptr);
-        double law[2], table[2];
+        const double base = null_shift(model, {}, T, nullptr); // the same without bore tables
+        double law[2], table[2], bore[2];
         for (int k = 0; k < 2; ++k)
           {
             const double step = k == 0 ? delta : -delta;
@@ -115,16 +124,18 @@ int main(int argc, char **argv)
             const StageFunctions left_tables(StageTables::read(tables_directory(v), v));
             Offsets built;
             (orifice ? built.sides[left].orifice_diameter : built.sides[left].nozzle_diameter) = step;
-            law[k] = (null_shift(model, built, T, nullptr) - base) / step * per_um;
+            law[k] = (null_shift(closed_forms, built, T, nullptr) - base) / step * per_um;
+            bore[k] = (null_shift(model, built, T, nullptr) - base) / step * per_um;
             table[k] = (null_shift(model, {}, T, &left_tables) - base) / step * per_um;
           }
-        const double central_law = 0.5 * (law[0] + law[1]), central_table = 0.5 * (table[0] + table[1]);
-        const char *bore = orifice ? "orifice" : "nozzle";
+        const auto line = [&](const std::string &step, double reference, double by_bore, double by_law) {
+          csv << (orifice ? "orifice" : "nozzle") << "," << T << "," << step << "," << reference << "," << by_bore << ","
+              << std::abs(by_bore - reference) / std::abs(reference) << "," << by_law << ","
+              << std::abs(by_law - reference) / std::abs(reference) << "\n";
+        };
         for (int k = 0; k < 2; ++k)
-          csv << bore << "," << T << "," << (k == 0 ? delta : -delta) << "," << law[k] << "," << table[k] << ","
-              << std::abs(law[k] - table[k]) / std::abs(table[k]) << "\n";
-        csv << bore << "," << T << ",central," << central_law << "," << central_table << ","
-            << std::abs(central_law - central_table) / std::abs(central_table) << "\n";
+          line(number(k == 0 ? delta : -delta), table[k], bore[k], law[k]);
+        line("central", 0.5 * (table[0] + table[1]), 0.5 * (bore[0] + bore[1]), 0.5 * (law[0] + law[1]));
       }
   if (mpi_rank() == 0)
     {

@@ -154,6 +154,18 @@ namespace servodrift
       }
   }
 
+  void remove_output_file(const std::string &path)
+  {
+    std::error_code ec;
+    if (!fs::exists(path, ec))
+      return;
+    if (open_journal)
+      open_journal->before_install(path); // kept for an undo, like a file it replaces
+    fs::remove(path, ec);
+    if (ec)
+      throw InputError(path + ": cannot remove (" + ec.message() + ")");
+  }
+
   bool is_non_finite_token(const std::string &token)
   {
     std::string t;

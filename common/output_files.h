@@ -21,6 +21,11 @@ namespace servodrift
   /// OutputTransaction if one is open. Removes `temporary' and throws InputError on failure.
   void install_file(const std::string &temporary, const std::string &path);
 
+  /// Removes an output a previous run left that this run does not make (a stale file would be
+  /// read with the new ones), through the run's OutputTransaction if one is open: an undo puts it
+  /// back.
+  void remove_output_file(const std::string &path);
+
   /// The files one run writes, as one transaction (issue 24: a run that fails leaves the output
   /// directory as it was). While it is open, every file installed is journalled: a file it
   /// replaces is kept as a hard link (or a copy) in <directory>/.servodrift-undo.<pid>/. commit()

@@ -43,13 +43,34 @@ namespace servodrift
                                       {"flapper_force", "N"},
                                       {"flag", "1"}},
                                      3};
+    const TableSchema fixed_orifice_bore{"fixed_orifice_bore",
+                                         1,
+                                         {{"temperature", "degC"},
+                                          {"pressure_difference", "Pa"},
+                                          {"bore_step", "m"},
+                                          {"flow_ratio", "1"},
+                                          {"flag", "1"}},
+                                         2};
+    const TableSchema nozzle_flapper_bore{"nozzle_flapper_bore",
+                                          1,
+                                          {{"temperature", "degC"},
+                                           {"gap", "m"},
+                                           {"pressure_difference", "Pa"},
+                                           {"bore_step", "m"},
+                                           {"flow_ratio", "1"},
+                                           {"force_ratio", "1"},
+                                           {"flag", "1"}},
+                                          3};
 
     const TableSchema &by_name(const std::string &name)
     {
-      for (const TableSchema *s : {&torque_motor, &spring_tube, &fixed_orifice, &nozzle_flapper})
+      for (const TableSchema *s :
+           {&torque_motor, &spring_tube, &fixed_orifice, &nozzle_flapper, &fixed_orifice_bore, &nozzle_flapper_bore})
         if (s->name == name)
           return *s;
-      throw InputError("unknown table `" + name + "' (known: torque_motor, spring_tube, fixed_orifice, nozzle_flapper)");
+      throw InputError("unknown table `" + name +
+                       "' (known: torque_motor, spring_tube, fixed_orifice, nozzle_flapper, fixed_orifice_bore, "
+                       "nozzle_flapper_bore)");
     }
   } // namespace schemas
 

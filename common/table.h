@@ -43,6 +43,11 @@ namespace servodrift
     extern const TableSchema spring_tube;    ///< T -> stiffness K_a, flag
     extern const TableSchema fixed_orifice;  ///< (T, dp) -> Q, C_d, Re, flag
     extern const TableSchema nozzle_flapper; ///< (T, gap, dp) -> Q, C_d, Re, flapper force, flag
+    /// (T, dp) -> bore step, Q(D_0 + step)/Q(D_0), flag: the orifice's flow at another bore, where
+    /// the closed forms' ratio does not hold (the field level; system/valve_equations.cc)
+    extern const TableSchema fixed_orifice_bore;
+    /// (T, gap, dp) -> bore step, Q and flapper force at D_N + step over those at D_N, flag
+    extern const TableSchema nozzle_flapper_bore;
     /// The schema of a table name; throws InputError for an unknown name.
     const TableSchema &by_name(const std::string &name);
   } // namespace schemas

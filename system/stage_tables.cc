@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 
 namespace servodrift::system
@@ -43,6 +44,16 @@ namespace servodrift::system
             if (!(r[k] > 0))
               refuse(r[T], "the stiffness is " + format_number(r[k]) + " N*m/rad; it must be > 0");
         }
+      else if (t.name() == "fixed_orifice_bore" || t.name() == "nozzle_flapper_bore")
+        {
+          const std::size_t step = t.column_index("bore_step"), q = t.column_index("flow_ratio");
+          const bool nozzle = t.name() == "nozzle_flapper_bore";
+          if (t.rows.empty())
+            throw InputError(file + ": no rows (re-run the flow stage)");
+          for (const auto &r : t.rows)
+            if (!(r[step] != 0 && r[q] > 0 && (!nozzle || r[t.column_index("force_ratio")] > 0)))
+              refuse(r[T], "a bore step of 0 or a ratio <= 0 (flow_ratio " + format_number(r[q]) + ")");
+        }
       else
         {
           const std::size_t dp = t.column_index("pressure_difference"), q = t.column_index("flow_rate");
@@ -61,9 +72,17 @@ namespace servodrift::system
     t.spring_tube = Table::read(directory + "/spring_tube.csv", "spring_tube");
     t.fixed_orifice = Table::read(directory + "/fixed_orifice.csv", "fixed_orifice");
     t.nozzle_flapper = Table::read(directory + "/nozzle_flapper.csv", "nozzle_flapper");
-    for (const Table *table : {&t.torque_motor, &t.spring_tube, &t.fixed_orifice, &t.nozzle_flapper})
+    for (const auto &[name, bore] : {std::make_pair("fixed_orifice_bore", &t.fixed_orifice_bore),
+                                     std::make_pair("nozzle_flapper_bore", &t.nozzle_flapper_bore)})
+      if (std::filesystem::exists(directory + "/" + name + ".csv"))
+        *bore = Table::read(directory + "/" + name + ".csv", name);
+    std::vector<const Table *> all = {&t.torque_motor, &t.spring_tube, &t.fixed_orifice, &t.nozzle_flapper};
+    for (const auto *bore : {&t.fixed_orifice_bore, &t.nozzle_flapper_bore})
+      if (*bore)
+        all.push_back(&**bore);
+    for (const Table *table : all)
       check_physical(*table, directory + "/" + table->name() + ".csv");
-    for (const Table *table : {&t.torque_motor, &t.spring_tube, &t.fixed_orifice, &t.nozzle_flapper})
+    for (const Table *table : all)
       if (table->parameters_sha256 != valve.parameters_sha256)
         t.warnings.push_back("tables/" + table->name() + ".csv was made with other parameters (sha256 " +
                              table->parameters_sha256.substr(0, 12) + ", this run " +
@@ -125,5 +144,18 @@ namespace servodrift::system
     , nozzle_conductance(GridFunction::from_table(t.nozzle_flapper, "table nozzle_flapper", conductance(t.nozzle_flapper)))
     , nozzle_discharge(GridFunction::from_table(t.nozzle_flapper, "table nozzle_flapper", "discharge_coefficient"))
     , flapper_force(GridFunction::from_table(t.nozzle_flapper, "table nozzle_flapper", "flapper_force"))
-  {}
+  {
+    const auto log_of = [](const Table &table, const std::string &column) {
+      const std::size_t c = table.column_index(column);
+      return GridFunction::from_table(table, "table " + table.name(),
+                                      [c](const std::vector<double> &row) { return std::log(row[c]); });
+    };
+    if (t.fixed_orifice_bore)
+      orifice_bore = BoreSensitivity{log_of(*t.fixed_orifice_bore, "flow_ratio"), std::nullopt,
+                                     t.fixed_orifice_bore->rows.front()[t.fixed_orifice_bore->column_index("bore_step")]};
+    if (t.nozzle_flapper_bore)
+      nozzle_bore = BoreSensitivity{log_of(*t.nozzle_flapper_bore, "flow_ratio"),
+                                    log_of(*t.nozzle_flapper_bore, "force_ratio"),
+                                    t.nozzle_flapper_bore->rows.front()[t.nozzle_flapper_bore->column_index("bore_step")]};
+  }
 } // namespace servodrift::system

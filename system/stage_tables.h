@@ -6,6 +6,7 @@
 #include "common/table.h"
 #include "common/valve_description.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,8 @@ namespace servodrift::system
     Table spring_tube{schemas::spring_tube};
     Table fixed_orifice{schemas::fixed_orifice};
     Table nozzle_flapper{schemas::nozzle_flapper};
+    /// the pilot flows at wider bores, where the flow stage made them (`Pilot stage/Bore sensitivity')
+    std::optional<Table> fixed_orifice_bore, nozzle_flapper_bore;
     std::vector<std::string> warnings; ///< e.g. a table made with other parameters
 
     /// Reads and checks the four tables from `directory'.
@@ -37,5 +40,14 @@ namespace servodrift::system
     GridFunction nozzle_conductance;  ///< Q_N/sqrt(dp)(T, gap, dp); 0 at dp = 0
     GridFunction nozzle_discharge;    ///< C_dn(T, gap, dp) [1]
     GridFunction flapper_force;       ///< F(T, gap, dp) [N]
+    /// A side's bore: ln(Q(D + step)/Q(D)) and the same of the flapper force, on the bore tables'
+    /// few points, with their steps [m]; empty without bore tables
+    struct BoreSensitivity
+    {
+      GridFunction log_flow_ratio;
+      std::optional<GridFunction> log_force_ratio; ///< the nozzle's
+      double step;
+    };
+    std::optional<BoreSensitivity> orifice_bore, nozzle_bore;
   };
 } // namespace servodrift::system

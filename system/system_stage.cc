@@ -29,6 +29,18 @@ namespace servodrift::system
     for (double T : valve.sweeps.drift_temperatures)
       results.coefficients.push_back(stage_coefficients(model, T));
     results.model_form = model_form_coefficients(valve, tables, results.coefficients, tables_directory, results.warnings);
+    // a side's own bore on field tables without bore tables: the closed forms' ratio stands in
+    bool bore_differs = valve.asymmetry.left.orifice_diameter != 0 || valve.asymmetry.right.orifice_diameter != 0 ||
+                        valve.asymmetry.left.nozzle_diameter != 0 || valve.asymmetry.right.nozzle_diameter != 0;
+    if (analyses.tolerances)
+      for (std::size_t k : valve.tolerances.active())
+        bore_differs = bore_differs || valve.tolerances.distributions[k].name.find("diameter") != std::string::npos;
+    if (bore_differs && (!tables.fixed_orifice_bore || !tables.nozzle_flapper_bore) &&
+        tables.fixed_orifice.producer.find("flow/field") != std::string::npos)
+      results.warnings.push_back("a side's own bore is carried by the closed forms' ratio: the field-level tables have no "
+                                 "bore tables (tables/*_bore.csv), and at the field level that ratio can miss the null "
+                                 "shift per micrometre of a bore by 70 % or more (re-run the flow stage with `Pilot "
+                                 "stage/Bore sensitivity' auto or on; doc/method.md \"Asymmetric valve\")");
     results.drift_map = compute_drift_map(model, valve.output.progress);
     if (analyses.dynamics)
       results.dynamics = compute_dynamics(model, valve.output.progress);

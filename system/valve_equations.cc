@@ -70,6 +70,8 @@ namespace servodrift::system
         side_gap[side] = x0 + d.null_gap;
         orifice_factor[side] = d.orifice_discharge_factor;
         nozzle_factor[side] = d.nozzle_discharge_factor;
+        orifice_deviation[side] = d.orifice_diameter;
+        nozzle_deviation[side] = d.nozzle_diameter;
         orifice_bore_deviates[side] = d.orifice_diameter != 0;
         nozzle_bore_deviates[side] = d.nozzle_diameter != 0;
         side_deviates[side] = orifice_bore_deviates[side] || nozzle_bore_deviates[side] ||
@@ -164,10 +166,29 @@ namespace servodrift::system
     constexpr double ratio_gap_floor = 1e-8;     // [m]
   } // namespace
 
+  namespace
+  {
+    /// exp(ln ratio(x) deviation/step): the bore tables' ratio carried log-linearly to a side's
+    /// deviation, the query held within their few points (they need not span the flow tables)
+    template <typename... X>
+    double bore_power(const GridFunction &log_ratio, double deviation, double step, X... x)
+    {
+      unsigned int k = 0;
+      const auto clamped = [&](double value) {
+        const auto &axis = log_ratio.axis(k++);
+        return std::clamp(value, axis.front(), axis.back());
+      };
+      const double at[] = {clamped(x)...};
+      return std::exp(log_ratio.value(at) * deviation / step);
+    }
+  } // namespace
+
   double ValveEquations::orifice_bore_ratio(Side side, double a) const
   {
     if (!orifice_bore_deviates[side])
       return 1;
+    if (const auto &bore = pilot_tables[side]->orifice_bore)
+      return bore_power(bore->log_flow_ratio, orifice_deviation[side], bore->step, T, a);
     const double dp = std::max(a, ratio_pressure_floor);
     return side_forms[side]->fixed_orifice(dp).flow_rate / nominal_forms->fixed_orifice(dp).flow_rate; // E21
   }
@@ -176,8 +197,18 @@ namespace servodrift::system
   {
     if (!nozzle_bore_deviates[side])
       return 1;
+    if (const auto &bore = pilot_tables[side]->nozzle_bore)
+      return bore_power(bore->log_flow_ratio, nozzle_deviation[side], bore->step, T, h, a);
     const double dp = std::max(a, ratio_pressure_floor), gap = std::max(h, ratio_gap_floor);
     return side_forms[side]->nozzle(gap, dp).flow_rate / nominal_forms->nozzle(gap, dp).flow_rate; // E22
+  }
+
+  std::optional<double> ValveEquations::force_bore_ratio(Side side, double h, double a) const
+  {
+    const auto &bore = pilot_tables[side]->nozzle_bore;
+    if (!nozzle_bore_deviates[side] || !bore)
+      return std::nullopt;
+    return bore_power(*bore->log_force_ratio, nozzle_deviation[side], bore->step, T, h, a);
   }
 
   // The tables give Q/sqrt(dp), which tends to 0 in the laminar limit dp -> 0, so Q = c(dp) sqrt(dp)
@@ -218,11 +249,16 @@ namespace servodrift::system
     double force = a <= nozzle_dp_max ? table(T, h, a) : table(T, h, nozzle_dp_max) * a / nozzle_dp_max;
     if (side_deviates[side])
       {
-        // E23's change from the tables' bore and flow to this side's: the bore pressure on its own
-        // projection, the momentum of its own flow (its discharge factor and bore included)
+        // to this side's bore: by the bore table's force ratio, or by E23's change from the tables'
+        // bore and flow to the side's (the bore pressure on its own projection, the momentum of its
+        // own flow); then the discharge factor by E23's momentum change of the flow it scales
         const double tabulated = tabulated_nozzle_flow(side, gap, a);
-        const double flow = nozzle_factor[side] * nozzle_bore_ratio(side, gap, a) * tabulated;
-        force += side_forms[side]->jet_force(a, flow) - nominal_forms->jet_force(a, tabulated);
+        const double at_bore = nozzle_bore_ratio(side, gap, a) * tabulated;
+        if (const auto ratio = force_bore_ratio(side, gap, a))
+          force *= *ratio;
+        else
+          force += side_forms[side]->jet_force(a, at_bore) - nominal_forms->jet_force(a, tabulated);
+        force += side_forms[side]->jet_force(a, nozzle_factor[side] * at_bore) - side_forms[side]->jet_force(a, at_bore);
       }
     return std::copysign(force, dp);
   }

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <optional>
 
 namespace servodrift::system
 {
@@ -188,13 +189,15 @@ namespace servodrift::system
     double p_s, p_r, r, x0, K_a, J_a, B_a;
     // asymmetric valve (issue 25): per side, and the motor's mismatch mapped through E3
     std::array<double, 2> side_gap, orifice_factor, nozzle_factor;
-    /// A side built off the tables' bores carries the table's flows by the closed forms' ratio at
-    /// its own and the tables' bores (E21, E22) and the jet force by E23's change (doc/method.md
-    /// "Asymmetric valve"): the closed forms at the tables' geometry and at each side's; null where
-    /// unused.
+    /// A side built off the tables' bores carries the table's flows and jet force by the bore
+    /// tables' ratios where the flow stage made them, else by the closed forms' ratio at its own
+    /// and the tables' bores (E21, E22) and E23's change (doc/method.md "Asymmetric valve"); a
+    /// discharge factor by E23's momentum change. The closed forms at the tables' geometry and at
+    /// each side's; null where unused.
     std::shared_ptr<const PilotClosedForms> nominal_forms;
     std::array<std::shared_ptr<const PilotClosedForms>, 2> side_forms;
     std::array<bool, 2> orifice_bore_deviates{}, nozzle_bore_deviates{}, side_deviates{};
+    std::array<double, 2> orifice_deviation{}, nozzle_deviation{}; ///< D' - D of each side [m]
     std::array<const StageFunctions *, 2> pilot_tables; ///< each side's pilot tables (the nominal: &f)
     double magnetic_null_;
     bool motor_mismatch;
@@ -210,9 +213,12 @@ namespace servodrift::system
     /// The tables' flows of one side at |dp| (and a gap in the table) [m^3/s]
     double tabulated_orifice_flow(Side side, double pressure_difference) const;
     double tabulated_nozzle_flow(Side side, double gap, double pressure_difference) const;
-    /// Q(side's bore)/Q(tables' bore) by the closed forms (E21 or E22); 1 for the tables' bore
+    /// Q(side's bore)/Q(tables' bore) by the bore tables or the closed forms (E21 or E22); 1 for
+    /// the tables' bore
     double orifice_bore_ratio(Side side, double pressure_difference) const;
     double nozzle_bore_ratio(Side side, double gap, double pressure_difference) const;
+    /// The same ratio of the flapper force by the bore table (empty without one)
+    std::optional<double> force_bore_ratio(Side side, double gap, double pressure_difference) const;
 
     /// One metering edge of opening `opening' (> 0 open) and pressure difference dp across it.
     std::array<double, 2> edge(double opening, double pressure_difference) const;

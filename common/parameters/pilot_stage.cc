@@ -146,6 +146,18 @@ namespace servodrift
                       "flapper force and K_f between them and the default as the model-form uncertainty "
                       "(system/model_form_spread.csv, a band in the report). laminar: only where the "
                       "transition Reynolds number allows it. Each costs a flow stage. Empty: none. [-]");
+    prm.declare_entry("Bore sensitivity", "auto", Patterns::Selection("auto|on|off"),
+                      "Whether the flow stage also tabulates the pilot flows at bores one `Bore "
+                      "sensitivity step' wider (tables/fixed_orifice_bore.csv, nozzle_flapper_bore.csv: "
+                      "a few points per temperature), from which the system model carries a side built "
+                      "to another bore (Asymmetry, Tolerances). Without them it uses the closed forms' "
+                      "ratio E21/E22, exact at the reduced-order level but not at the field level "
+                      "(doc/method.md \"Asymmetric valve\"). auto: at the field level when `Tolerances' "
+                      "is enabled with a bore toleranced or `Asymmetry' sets a bore deviation. [-]");
+    prm.declare_entry("Bore sensitivity step", "4e-6", Patterns::Double(1e-7, 5e-5),
+                      "Diameter step of the bore-sensitivity tables, the same for the fixed orifice and "
+                      "the nozzle: large enough that the field level's discretisation noise between two "
+                      "meshes stays below the effect, small against the bores. [m]");
     prm.declare_entry("Fixed orifice law", "lichtarowicz", Patterns::Selection("lichtarowicz|paper-fit"),
                       "Reduced-order fixed-orifice discharge coefficient: lichtarowicz (E21, RV-1) or "
                       "paper-fit (the paper's cubic E26 in Re_0, clamped to its window Re_0 in "
@@ -206,6 +218,9 @@ namespace servodrift
     model_form_alternatives.clear();
     for (const std::string &name : dealii::Utilities::split_string_list(prm.get("Model-form alternatives")))
       model_form_alternatives.push_back(name);
+    const std::string bore = prm.get("Bore sensitivity");
+    bore_sensitivity = bore == "on" ? BoreSensitivity::on : bore == "off" ? BoreSensitivity::off : BoreSensitivity::automatic;
+    bore_sensitivity_step = prm.get_double("Bore sensitivity step");
     fixed_orifice_law =
       prm.get("Fixed orifice law") == "paper-fit" ? OrificeLaw::paper_fit : OrificeLaw::lichtarowicz;
     nozzle_law = prm.get("Nozzle law") == "paper-fit" ? NozzleLaw::paper_fit : NozzleLaw::curtain;

@@ -53,6 +53,12 @@ namespace servodrift
     /// uncertainty); each by its name in the tables' file names (`laminar': the automatic switch)
     std::vector<std::string> model_form_alternatives;
 
+    /// whether the flow stage tabulates the flows at wider bores (automatic: when a study needs them
+    /// at the field level; ValveDescription::needs_bore_tables)
+    enum class BoreSensitivity { automatic, on, off };
+    BoreSensitivity bore_sensitivity;
+    double bore_sensitivity_step; ///< [m]
+
     OrificeLaw fixed_orifice_law;
     NozzleLaw nozzle_law;
     FlapperForceLaw flapper_force_law;
