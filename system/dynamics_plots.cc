@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <sstream>
 
@@ -196,7 +197,9 @@ namespace servodrift::system
             points << c(check.frequency) << ' ' << c(amplitude) << ' '
                    << c(linear_phase(dc.brake_pressure, check.frequency, check.linear[0]) + degrees(s.gain[0] / check.linear[0]))
                    << ' ' << c(100 * s.amplitude / valve.operating.rated_current) << '\n';
-            labels << "set label '" << c(100 * s.amplitude / valve.operating.rated_current) << " %" << (check.linear_limit ? "" : "*")
+            char percent[16];
+            std::snprintf(percent, sizeof(percent), "%.3g", 100 * s.amplitude / valve.operating.rated_current);
+            labels << "set label '" << percent << " %" << (check.linear_limit ? "" : "*")
                    << "' at " << c(check.frequency) << "," << c(amplitude) << " offset 0.5,0.8 font ',8'\n";
           }
         points << "\n\n# linear\n";
