@@ -252,6 +252,34 @@ namespace servodrift
     return s.str();
   }
 
+  std::string read_text_file(const std::string &file, const std::string &what, std::size_t max_bytes)
+  {
+    std::error_code ec;
+    const auto status = fs::status(file, ec); // follows links; does not open (a FIFO would block)
+    if (ec || !fs::exists(status))
+      throw InputError(file + ": cannot open " + what + " (does it exist and is it readable?)");
+    if (fs::is_directory(status))
+      throw InputError(file + ": is a directory, not " + what);
+    if (!fs::is_regular_file(status))
+      throw InputError(file + ": is not a regular file (a device, pipe or socket), not " + what);
+    if (fs::file_size(file, ec) > max_bytes)
+      throw InputError(file + ": is larger than " + std::to_string(max_bytes >> 20) + " MiB, not " + what);
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+      throw InputError(file + ": cannot open " + what + " (is it readable?)");
+    std::ostringstream s;
+    s << in.rdbuf();
+    const std::string text = s.str();
+    for (std::size_t k = 0; k < text.size(); ++k)
+      {
+        const auto c = static_cast<unsigned char>(text[k]);
+        if (c == 0 || (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f'))
+          throw InputError(file + ": is not a text file (byte " + std::to_string(k) + " is a control character), not " +
+                           what);
+      }
+    return text;
+  }
+
   std::string format_cell(double value)
   {
     char buffer[40];

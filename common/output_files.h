@@ -1,5 +1,6 @@
 #pragma once
 // Writing outputs so that nothing half-written is ever left behind.
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -60,6 +61,13 @@ namespace servodrift
 
   /// Reads a whole file; throws InputError naming the file if it cannot be read.
   std::string read_file(const std::string &path);
+
+  /// Reads a whole input file that must be text: refused (InputError naming the file, never
+  /// echoing its content) unless it is a readable regular file (not a directory, device, pipe or
+  /// socket, which is looked at without opening it: a FIFO would block) of at most `max_bytes' bytes
+  /// with no NUL or other control character but tab, CR, LF and FF. `what' says what it should be
+  /// ("a parameter file").
+  std::string read_text_file(const std::string &path, const std::string &what, std::size_t max_bytes);
 
   /// "%.12g": the number format of every table and CSV output (12 digits survive a round trip of
   /// any value we tabulate, and the same value always prints the same way).

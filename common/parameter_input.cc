@@ -1,5 +1,7 @@
 #include "common/parameter_input.h"
 
+#include "common/output_files.h"
+
 #include "common/error.h"
 #include "common/parameter_messages.h"
 
@@ -60,36 +62,10 @@ namespace servodrift
     }
 
     // ---- files ------------------------------------------------------------------------------------
-    /// The content of a parameter file (the input or one it includes), refused unless it is a
-    /// readable regular file of text of reasonable size. Never echoes the content.
+    /// The content of a parameter file (the input or one it includes): a text file of a few kB.
     std::string text_file(const std::string &file, const std::string &what)
     {
-      namespace fs = std::filesystem;
-      std::error_code ec;
-      const auto status = fs::status(file, ec); // follows links; does not open (a FIFO would block)
-      if (ec || !fs::exists(status))
-        throw InputError(file + ": cannot open " + what + " (does it exist and is it readable?)");
-      if (fs::is_directory(status))
-        throw InputError(file + ": is a directory, not " + what + " (give a .prm or .json file)");
-      if (!fs::is_regular_file(status))
-        throw InputError(file + ": is not a regular file (a device, pipe or socket), not " + what);
-      if (fs::file_size(file, ec) > input_limits::file_bytes)
-        throw InputError(file + ": is larger than " + std::to_string(input_limits::file_bytes >> 20) +
-                         " MiB, not " + what + " (a parameter file is a few kB)");
-      std::ifstream in(file, std::ios::binary);
-      if (!in)
-        throw InputError(file + ": cannot open " + what + " (is it readable?)");
-      std::ostringstream s;
-      s << in.rdbuf();
-      const std::string text = s.str();
-      for (std::size_t k = 0; k < text.size(); ++k)
-        {
-          const auto c = static_cast<unsigned char>(text[k]);
-          if (c == 0 || (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f'))
-            throw InputError(file + ": is not a text file (byte " + std::to_string(k) + " is a control character), not " +
-                             what);
-        }
-      return text;
+      return read_text_file(file, what, input_limits::file_bytes);
     }
 
     /// The subsection path ("A/B/") open at a given line of a PRM text.

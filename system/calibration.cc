@@ -7,6 +7,7 @@
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/distributions/students_t.hpp>
 #include <ceres/ceres.h>
+#include <glog/logging.h>
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -18,6 +19,19 @@ namespace servodrift::system
 {
   namespace
   {
+    /// Ceres reports through glog, which before InitGoogleLogging writes every message, with a
+    /// warning that it was not initialised, to stderr. servodrift reports the solver's outcome
+    /// itself (the termination message, the warnings): glog initialised once, to log nothing below
+    /// FATAL and no files.
+    void quiet_solver_logging()
+    {
+      if (google::IsGoogleLoggingInitialized())
+        return;
+      FLAGS_logtostderr = true;       // no log files in /tmp
+      FLAGS_minloglevel = google::GLOG_FATAL;
+      google::InitGoogleLogging("servodrift");
+    }
+
     /// Subsections that hold no valve parameter: what they set is how a run samples or writes.
     const std::set<std::string> not_valve_parameters = {"Output", "Sweeps", "Flow solver", "Fits", "Dynamics", "Tolerances"};
 
@@ -53,6 +67,15 @@ namespace servodrift::system
       return p;
     }
 
+    /// "`Offsets/Magnetic null' = 2 deg, ...": the free entries at `values' (declared units).
+    std::string describe(const std::vector<FreeParameter> &parameters, const std::vector<double> &values)
+    {
+      std::string text;
+      for (std::size_t j = 0; j < parameters.size(); ++j)
+        text += (j ? ", `" : "`") + parameters[j].path + "' = " + format_number(values[j]) + " " + parameters[j].unit;
+      return text;
+    }
+
     /// Weighted residuals (model - measured)/sigma of the free parameters in scaled form,
     /// value = initial + scale x, with central differences (one-sided at a bound).
     class Residuals final : public ceres::CostFunction
@@ -81,7 +104,8 @@ namespace servodrift::system
         return v;
       }
 
-      /// The weighted residuals at scaled x; false where the model refuses the values.
+      /// The weighted residuals at scaled x; false where the model refuses the values (the last
+      /// refusal is kept: refusal()).
       bool residuals_at(const double *x, double *r) const
       {
         try
@@ -91,11 +115,15 @@ namespace servodrift::system
               r[k] = (y[k] - points[k].value) / sigma[k];
             return true;
           }
-        catch (const std::exception &)
+        catch (const std::exception &e)
           {
+            last_refusal = describe(setup.parameters, values(x)) + ": " + e.what();
             return false;
           }
       }
+
+      /// The model's last refusal of a trial point, with the free entries' values there.
+      const std::string &refusal() const { return last_refusal; }
 
       bool Evaluate(double const *const *parameters, double *r, double **jacobians) const override
       {
@@ -131,6 +159,7 @@ namespace servodrift::system
       const CalibrationSetup &setup;
       std::vector<Measurement> points;
       std::vector<double> sigma, scale, lower, upper;
+      mutable std::string last_refusal;
     };
 
     /// The size of the measured values (their RMS; the start's residuals' where all are zero; 1
@@ -317,7 +346,7 @@ namespace servodrift::system
       }
     catch (const std::exception &e)
       {
-        throw InputError(std::string("calibrate: at the starting values: ") + e.what());
+        throw InputError("calibrate: the start " + describe(s.parameters, start) + " is outside the model: " + e.what());
       }
     return s;
   }
@@ -363,11 +392,14 @@ namespace servodrift::system
     options.parameter_tolerance = 1e-12;
     options.logging_type = ceres::SILENT;
     ceres::Solver::Summary summary;
+    quiet_solver_logging();
     ceres::Solve(options, &problem, &summary);
     r.termination = summary.message;
     r.iterations = int(summary.iterations.size()) - 1;
     if (!summary.IsSolutionUsable())
-      throw std::runtime_error("calibrate: the least-squares solver failed: " + summary.message);
+      throw InputError("calibrate: stuck at " + describe(setup.parameters, residuals->values(x.data())) +
+                       (residuals->refusal().empty() ? ": " + summary.message :
+                                                       "; the model refuses every step, last at " + residuals->refusal()));
     if (summary.termination_type == ceres::NO_CONVERGENCE)
       r.warnings.push_back("the solver stopped after " + std::to_string(r.iterations) +
                            " iterations without converging: " + summary.message);

@@ -1,11 +1,11 @@
 #include "system/measured_data.h"
 
 #include "common/error.h"
+#include "common/output_files.h"
 #include "common/parameter_input.h"
 
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -57,6 +57,18 @@ namespace servodrift::system
       return f == known.end() ? std::nullopt : std::optional<double>(f->second);
     }
 
+    /// A bench's measured drift data are a few kB; anything near this is not such a file.
+    constexpr std::size_t measured_file_bytes = 16u << 20;
+
+    /// A standard deviation below this fraction of its value's size is below double precision: no
+    /// model can meet it, and its weighted residual would overflow the least squares.
+    constexpr double smallest_relative_standard_deviation = 1e-15;
+    /// Nor below this in SI units (A, Pa, m), far under anything a bench resolves
+    constexpr double smallest_standard_deviation = 1e-30;
+    /// No measured quantity comes near this in SI units; beyond it squares (the least squares'
+    /// chi-square) would overflow
+    constexpr double largest_value = 1e100;
+
     std::string allowed_units(const std::string &si)
     {
       return si == "A" ? "A, mA" : si == "Pa" ? "Pa, kPa, MPa, bar" : si == "m" ? "m, mm, um" : "degC";
@@ -79,9 +91,7 @@ namespace servodrift::system
 
   MeasuredData read_measured_data(const std::string &file)
   {
-    std::ifstream in(file);
-    if (!in)
-      throw InputError(shown_input(file) + ": cannot open the measured data");
+    std::istringstream in(read_text_file(file, "a measured-data CSV file", measured_file_bytes));
     MeasuredData data;
     data.file = file;
     std::string line;
@@ -91,6 +101,7 @@ namespace servodrift::system
       throw InputError(shown_input(file) + ":" + std::to_string(at) + ": " + what);
     };
     bool any_sd = false, missing_sd = false;
+    std::map<std::pair<MeasuredQuantity, double>, std::pair<double, std::size_t>> series; ///< last T and its line
     while (std::getline(in, line))
       {
         ++number;
@@ -167,6 +178,10 @@ namespace servodrift::system
               refuse(number, "column " + std::to_string(c + 1) + ": `" + shown_input(cells[c], 30) +
                                "' is not a finite number");
             const double v = x * columns[c].factor;
+            if (!(std::abs(v) <= largest_value))
+              refuse(number, "column " + std::to_string(c + 1) + ": `" + shown_input(cells[c], 30) + "' " +
+                               (std::isfinite(v) ? "is " + format_number(v) + " in SI units" : "overflows in SI units") +
+                               " (allowed: at most 1e100 in magnitude)");
             switch (columns[c].role)
               {
                 case Column::Role::temperature: T = v; break;
@@ -183,6 +198,19 @@ namespace servodrift::system
           {
             const auto sd = sds.find(q);
             (sd == sds.end() ? missing_sd : any_sd) = true;
+            if (sd != sds.end() &&
+                !(sd->second >= smallest_standard_deviation && sd->second >= smallest_relative_standard_deviation * std::abs(v)))
+              refuse(number, std::string("the standard deviation of ") + name(q) + " is " + format_number(sd->second) + " " +
+                               si_unit(q) + ", below double precision of its value " + format_number(v) +
+                               " (allowed: at least 1e-15 of the value and 1e-30 " + si_unit(q) + ")");
+            // a series (quantity, current) is measured at strictly increasing temperatures
+            const auto key = std::make_pair(q, i);
+            if (const auto last = series.find(key); last != series.end() && !(T > last->second.first))
+              refuse(number, std::string("temperature ") + format_number(T) + " degC of " + name(q) + " at " +
+                               format_number(i) + " A " + (T == last->second.first ? "repeats" : "is below") +
+                               " line " + std::to_string(last->second.second) +
+                               "'s (allowed: each series measured at increasing temperatures, each once)");
+            series[key] = {T, number};
             data.points.push_back({number, T, i, q, v, sd == sds.end() ? 0.0 : sd->second});
           }
       }

@@ -267,9 +267,8 @@ namespace servodrift::system
     const double lo = eq.magnetic_null() + angles.front(), hi = eq.magnetic_null() + angles.back();
     const double b_lo = balance(lo), b_hi = balance(hi);
     if (!(b_lo > 0 && b_hi < 0))
-      throw TableRangeError("nulling at the reference temperature: K_a (theta - theta_s) = T_em(theta - theta_m) "
-                            "has no root within the torque_motor table's angles (extend `Sweeps/Motor angles'; "
-                            "a root also needs K_a > K_m)");
+      throw TableRangeError("nulling at T0: K_a (theta - theta_s) = T_em(theta - theta_m) has no root within the "
+                            "torque table's angles (extend `Sweeps/Motor angles'; it also needs K_a > K_m)");
     return r * find_root(balance, lo, hi, b_lo, b_hi, 1e-13 * (hi - lo), "null adjustment at T0") - x_f;
   }
 
