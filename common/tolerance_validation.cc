@@ -7,6 +7,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -140,8 +141,21 @@ namespace servodrift
       {
         const Eigen::LLT<Eigen::MatrixXd> llt(R);
         if (llt.info() != Eigen::Success || !(llt.matrixL().toDenseMatrix().diagonal().minCoeff() > 1e-8))
-          refuse("Tolerances/Correlations", "give a correlation matrix that is not positive definite "
-                                            "(allowed: a matrix of a real joint distribution, e.g. |rho| < 1 for two)");
+          {
+            // the pair that weighs most in the direction of the smallest eigenvalue: the one to change
+            const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(R);
+            const Eigen::VectorXd v = eigen.eigenvectors().col(0).cwiseAbs();
+            Eigen::Index a = 0, b = 0;
+            v.maxCoeff(&a);
+            Eigen::VectorXd rest = v;
+            rest(a) = -1;
+            rest.maxCoeff(&b);
+            refuse("Tolerances/Correlations",
+                   "give a correlation matrix that is not positive definite (smallest eigenvalue " +
+                     format_number(eigen.eigenvalues()(0)) + "): `" + names[active[std::size_t(a)]].first + "' : `" +
+                     names[active[std::size_t(b)]].first + "' : " + format_number(R(a, b)) +
+                     " contradicts the others (allowed: the matrix of a real joint distribution)");
+          }
         if (t.sobol_base_samples > 0)
           refuse("Tolerances/Sobol base samples", "must be 0 with `Tolerances/Correlations' set: Sobol' indices "
                                                   "need independent quantities (allowed: 0, or no correlations)");

@@ -25,6 +25,13 @@ namespace servodrift::system
         {
           // the command acts through dT_em/di (K_t): the torque must change with the current
           const std::size_t angle = t.column_index("angle"), torque = t.column_index("torque");
+          // the valve at rest, the nulling and the null shift are at i = 0
+          const std::vector<double> currents = t.column("current");
+          const auto [low, high] = std::minmax_element(currents.begin(), currents.end());
+          if (!currents.empty() && !(*low <= 0 && *high >= 0))
+            throw InputError(file + ": its currents span " + format_number(*low) + " to " + format_number(*high) +
+                             " A without 0, where the valve at rest, the nulling and the null shift are "
+                             "(`Sweeps/Motor currents' must span 0; re-run the magnetics stage)");
           std::map<std::pair<double, double>, std::pair<double, double>> range; // (T, theta) -> min, max
           for (const auto &r : t.rows)
             {

@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "common/parameters/parameter_helpers.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace servodrift
@@ -142,10 +143,13 @@ namespace servodrift
                        " (allowed: `Quantity A : Quantity B : rho' separated by commas, rho in (-1, 1), the "
                        "quantities named as the subsections of `Tolerances')");
     };
+    const bool any = !trim(text).empty();
+    std::size_t position = 0;
     while (std::getline(items, item, ','))
       {
+        ++position;
         if (trim(item).empty())
-          continue;
+          refuse("has an empty item (item " + std::to_string(position) + ")");
         std::vector<std::string> parts;
         std::stringstream fields(item);
         for (std::string field; std::getline(fields, field, ':');)
@@ -178,8 +182,13 @@ namespace servodrift
           }
         if (!(c.coefficient > -1 && c.coefficient < 1))
           refuse("has a coefficient outside (-1, 1)");
+        for (const Correlation &earlier : correlations)
+          if (std::minmax(earlier.first, earlier.second) == std::minmax(c.first, c.second))
+            refuse("gives the pair `" + parts[0] + "' and `" + parts[1] + "' twice");
         correlations.push_back(c);
       }
+    if (any && text.find_last_not_of(" \t") != std::string::npos && text[text.find_last_not_of(" \t")] == ',')
+      refuse("ends with a comma (an empty item)");
     prm.leave_subsection();
   }
 } // namespace servodrift
