@@ -45,7 +45,13 @@ namespace servodrift::system
     if (analyses.dynamics)
       results.dynamics = compute_dynamics(model, valve.output.progress);
     if (analyses.tolerances)
-      results.tolerances = compute_tolerances(model, valve.output.progress);
+      {
+        results.tolerances = compute_tolerances(model, valve.output.progress);
+        if (const std::size_t outside = results.tolerances->outside_tables)
+          results.warnings.push_back(std::to_string(outside) + " of the tolerance study's " +
+                                     std::to_string(results.tolerances->valves.size()) +
+                                     " valves lie outside the tables: counted as failing (report.md, Tolerances)");
+      }
 
     // E28: dF_f = K_f(T) x_f with K_f(T) = c1 T^4 + c2 T^3 + c3 T^2 + c4 T + c5
     std::vector<std::vector<double>> T;

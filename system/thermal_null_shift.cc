@@ -1,5 +1,7 @@
 #include "system/thermal_null_shift.h"
 
+#include "common/error.h"
+
 #include <cmath>
 #include <utility>
 
@@ -23,6 +25,42 @@ namespace servodrift::system
   }
 
   ThermalNullShift ThermalNullShiftEvaluator::evaluate(const Offsets &build) const
+  {
+    try
+      {
+        return evaluate_within_tables(build);
+      }
+    catch (const TableRangeError &)
+      {
+        ThermalNullShift r;
+        r.hydraulic_null = r.maximum_null_shift = 0;
+        r.temperature_of_maximum = reference_temperature;
+        r.flags = ThermalNullShift::outside_tables;
+        const std::size_t n = temperatures_.size();
+        r.null_shift_current.assign(n, 0.0);
+        if (with_operating_points)
+          {
+            r.pilot_null_pressure.assign(n, 0.0);
+            r.brake_pressure_deviation.assign(n, 0.0);
+          }
+        return r;
+      }
+  }
+
+  std::string ThermalNullShiftEvaluator::why_outside(const Offsets &build) const
+  {
+    try
+      {
+        evaluate_within_tables(build);
+        return "";
+      }
+    catch (const TableRangeError &e)
+      {
+        return e.what();
+      }
+  }
+
+  ThermalNullShift ThermalNullShiftEvaluator::evaluate_within_tables(const Offsets &build) const
   {
     ThermalNullShift r;
     Offsets nulled = build;

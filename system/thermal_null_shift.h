@@ -5,6 +5,7 @@
 // (primary), the pilot null pressure shift and the brake-pressure deviation at the rated current.
 #include "system/valve_model.h"
 
+#include <string>
 #include <vector>
 
 namespace servodrift::system
@@ -21,7 +22,8 @@ namespace servodrift::system
     {
       null_beyond_table = 1,   ///< no null within the torque_motor table's currents at some T
       flapper_on_nozzle = 2,   ///< the flapper rests on a nozzle at i = 0 or rated somewhere
-      spool_on_stop = 4        ///< the spool rests on a stroke stop at i = 0 or rated somewhere
+      spool_on_stop = 4,       ///< the spool rests on a stroke stop at i = 0 or rated somewhere
+      outside_tables = 8       ///< the valve left the tables (nulling or an operating point): not evaluated
     };
     unsigned flags = 0;
   };
@@ -33,7 +35,11 @@ namespace servodrift::system
     /// `with_operating_points': also the pilot null pressure and the brake-pressure deviation (two
     /// static operating points per temperature); without, the null-shift current alone.
     ThermalNullShiftEvaluator(const ValveModel &model, std::vector<double> temperatures, bool with_operating_points);
+    /// The valve's thermal null shift; a valve the tables do not reach (its nulling or an
+    /// operating point beyond their range) is returned flagged `outside_tables', its measures 0.
     ThermalNullShift evaluate(const Offsets &build) const;
+    /// What put such a valve outside the tables (the model's message), or empty.
+    std::string why_outside(const Offsets &build) const;
     const std::vector<double> &temperatures() const { return temperatures_; }
 
   private:
@@ -42,5 +48,7 @@ namespace servodrift::system
     bool with_operating_points;
     double reference_temperature, rated_current;
     std::vector<double> ideal_brake_drift; ///< p_B(T) - p_B(T0) of the ideal valve at the rated current [Pa]
+
+    ThermalNullShift evaluate_within_tables(const Offsets &build) const; ///< throws TableRangeError
   };
 } // namespace servodrift::system

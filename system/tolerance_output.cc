@@ -110,13 +110,15 @@ namespace servodrift::system
     samples.comments = comments(valve, "tolerance_samples", r);
     samples.comments.push_back("flags: null_beyond_table = no null within the torque_motor table's currents at some "
                                "temperature (the null-shift current is then the table's end, a bound); "
-                               "flapper_on_nozzle, spool_on_stop at i = 0 or rated somewhere");
+                               "flapper_on_nozzle, spool_on_stop at i = 0 or rated somewhere; outside_tables = the "
+                               "valve's nulling or an operating point lies beyond the tables: not evaluated (empty "
+                               "cells), failing");
     samples.columns = {"valve[1]"};
     for (std::size_t q : r.quantities)
       samples.columns.push_back(snake_case(quantity_name(q)) + "_deviation[" + ToleranceParameters::quantities()[q].second + "]");
     for (const char *c : {"hydraulic_null[m]", "maximum_abs_null_shift_current[mA]", "maximum_abs_null_shift_current[%]",
                           "temperature_of_maximum[degC]", "pass[-]", "null_beyond_table[-]", "flapper_on_nozzle[-]",
-                          "spool_on_stop[-]"})
+                          "spool_on_stop[-]", "outside_tables[-]"})
       samples.columns.push_back(c);
     for (const char *measure : {"null_shift_current", "pilot_null_pressure", "brake_pressure_deviation"})
       for (double T : r.temperatures)
@@ -128,16 +130,18 @@ namespace servodrift::system
         std::vector<std::string> row{std::to_string(k)};
         for (double x : r.inputs[k])
           row.push_back(cell(x));
-        row.insert(row.end(), {cell(v.hydraulic_null), cell(1e3 * v.maximum_null_shift),
-                               cell(100 * v.maximum_null_shift / r.rated_current), cell(v.temperature_of_maximum),
+        const bool outside = v.flags & ThermalNullShift::outside_tables;
+        const auto value = [&](double x) { return outside ? std::string() : cell(x); }; // none: not evaluated
+        row.insert(row.end(), {value(v.hydraulic_null), value(1e3 * v.maximum_null_shift),
+                               value(100 * v.maximum_null_shift / r.rated_current), value(v.temperature_of_maximum),
                                r.pass[k] ? "1" : "0", v.flags & ThermalNullShift::null_beyond_table ? "1" : "0",
                                v.flags & ThermalNullShift::flapper_on_nozzle ? "1" : "0",
-                               v.flags & ThermalNullShift::spool_on_stop ? "1" : "0"});
+                               v.flags & ThermalNullShift::spool_on_stop ? "1" : "0", outside ? "1" : "0"});
         for (double x : v.null_shift_current)
-          row.push_back(cell(1e3 * x));
+          row.push_back(value(1e3 * x));
         for (const auto *list : {&v.pilot_null_pressure, &v.brake_pressure_deviation})
           for (double x : *list)
-            row.push_back(cell(x));
+            row.push_back(value(x));
         samples.rows.push_back(row);
       }
     write_file_atomically(dir + "/tolerance_samples.csv", samples.text());
@@ -194,7 +198,8 @@ namespace servodrift::system
                                   cell(ix.total_interval[k].lower), cell(ix.total_interval[k].upper),
                                   cell(s.output_variance[o]), ""});
           else
-            sobol.rows.push_back({s.outputs[o], quantity, "", "", "", "", "", "", cell(s.output_variance[o]),
+            sobol.rows.push_back({s.outputs[o], quantity, "", "", "", "", "", "",
+                                  std::isfinite(s.output_variance[o]) ? cell(s.output_variance[o]) : "",
                                   "undefined: " + ix.undefined});
         }
     write_file_atomically(dir + "/sobol_indices.csv", sobol.text());
@@ -294,6 +299,12 @@ namespace servodrift::system
     if (beyond)
       out << beyond << " valves have no null within the torque_motor table's currents somewhere (counted as failing; "
           << "their null-shift current is the table's end, a bound).\n\n";
+    if (r.outside_tables)
+      out << "**" << r.outside_tables << " of " << r.valves.size()
+          << " valves lie outside the tables** (their nulling or an operating point beyond the tables' range): "
+             "counted as failing, not evaluated, so the yield is a lower bound and the statistics below are of the "
+          << r.valves.size() - r.outside_tables << " others. The first: " << r.outside_example
+          << ". Narrow the tolerance that drives them, or extend the tables (`Sweeps`).\n\n";
     if (const MeasureStatistics *m = find(r, "maximum_abs_null_shift_current", std::nullopt))
       out << "Maximum |null shift| over the range: median " << percent_text(m->quantiles[2]) << " %, 95 % of valves below "
           << percent_text(m->quantiles[3]) << " %, 99 % below " << percent_text(m->quantiles[4]) << " % of rated.\n\n";

@@ -137,13 +137,15 @@ namespace servodrift::system
     // An output that no tolerance moves (the null shift at the nulling temperature; or only the
     // magnets' remanence toleranced, which leaves an otherwise ideal valve's null where it is) has
     // no variance to share out: estimators given round-off return noise, not indices.
+    const std::size_t unevaluated = std::size_t(
+      std::count_if(output.begin(), output.end(), [](double y) { return !std::isfinite(y); }));
     double mean = 0, variance = 0;
     for (double y : output)
       mean += y / double(output.size());
     for (double y : output)
       variance += (y - mean) * (y - mean) / double(std::max<std::size_t>(output.size(), 2) - 1);
     const double spread = std::sqrt(variance);
-    if (!(spread > floor))
+    if (unevaluated > 0 || !(spread > floor))
       {
         const std::size_t d = design.empty() ? 0 : design.front().size();
         SobolIndices none;
@@ -151,7 +153,10 @@ namespace servodrift::system
         none.total.assign(d, 0.0);
         none.first_order_interval.assign(d, {0.0, 0.0});
         none.total_interval.assign(d, {0.0, 0.0});
-        none.undefined = spread == 0 ? "the output does not vary over the design"
+        none.undefined = unevaluated > 0 ? std::to_string(unevaluated) + " of the design's " +
+                                             std::to_string(output.size()) +
+                                             " valves have no value (outside the tables): the design is incomplete"
+                         : spread == 0 ? "the output does not vary over the design"
                                      : "the output's standard deviation over the design, " + format_number(spread) +
                                          ", is at most its floor " + format_number(floor) +
                                          " (round-off, not a tolerance's effect)";

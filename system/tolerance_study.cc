@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <limits>
 
 namespace servodrift::system
 {
@@ -72,12 +75,14 @@ namespace servodrift::system
         for (const auto &v : values)
           y.push_back(v[k]);
         s.indices.push_back(sobol_indices(t, design, y, floor));
-        const std::vector<double> a(y.begin(), y.begin() + t.sobol_base_samples);
+        std::vector<double> a; // the A block's values that exist
+        std::copy_if(y.begin(), y.begin() + t.sobol_base_samples, std::back_inserter(a),
+                     [](double v) { return std::isfinite(v); });
         double mean = 0, var = 0;
         for (double v : a)
           mean += v / double(a.size());
         for (double v : a)
-          var += (v - mean) * (v - mean) / double(a.size() - 1);
+          var += (v - mean) * (v - mean) / double(std::max<std::size_t>(a.size(), 2) - 1);
         s.output_variance.push_back(var);
       }
     return s;
@@ -107,6 +112,31 @@ namespace servodrift::system
           k += n_T;
         }
       return v;
+    }
+
+    /// A valve outside the tables, for the report: its index, its largest deviation (in standard
+    /// deviations, or half-widths of a uniform) with the entry and value, and the model's reason.
+    std::string outside_example(const ValveModel &model, const ToleranceParameters &t,
+                                const std::vector<std::size_t> &quantities, const std::vector<double> &row,
+                                std::size_t index, const ThermalNullShiftEvaluator &evaluator)
+    {
+      std::size_t worst = 0;
+      double worst_size = -1;
+      for (std::size_t k = 0; k < quantities.size(); ++k)
+        {
+          const ToleranceDistribution &d = t.distributions[quantities[k]];
+          const double spread = d.kind == ToleranceDistribution::Kind::uniform ? 0.5 * (d.upper - d.lower) : d.standard_deviation;
+          const double size = spread > 0 ? std::abs(row[k] - d.mean) / spread : 0;
+          if (size > worst_size)
+            worst_size = size, worst = k;
+        }
+      const ToleranceDistribution &d = t.distributions[quantities[worst]];
+      char size[16];
+      std::snprintf(size, sizeof(size), "%.3g", worst_size);
+      return "valve " + std::to_string(index) + ", whose largest deviation is `Tolerances/" + d.name + "' = " +
+             format_number(row[worst]) + " " + d.unit + " (" + size +
+             (d.kind == ToleranceDistribution::Kind::uniform ? " half-widths" : " standard deviations") +
+             "): " + evaluator.why_outside(built_valve(model, quantities, row));
     }
 
     MeasureStatistics statistics_of(std::string measure, std::string unit, std::optional<double> T,
@@ -148,20 +178,27 @@ namespace servodrift::system
       {
         r.valves.push_back(unpack(v, n_T));
         const ThermalNullShift &valve_result = r.valves.back();
-        const bool pass = !(valve_result.flags & ThermalNullShift::null_beyond_table) &&
-                          valve_result.maximum_null_shift <= r.spec * r.rated_current;
+        const bool pass =
+          !(valve_result.flags & (ThermalNullShift::null_beyond_table | ThermalNullShift::outside_tables)) &&
+          valve_result.maximum_null_shift <= r.spec * r.rated_current;
         r.pass.push_back(pass);
         r.passes += pass;
+        if (valve_result.flags & ThermalNullShift::outside_tables && r.outside_tables++ == 0)
+          r.outside_example = outside_example(model, t, r.quantities, r.inputs[r.valves.size() - 1], r.valves.size() - 1,
+                                              full);
       }
     r.yield_interval = proportion_interval(r.passes, r.valves.size(), t.confidence_level);
 
-    // Statistics: over the range, then the envelopes at each temperature
+    // Statistics over the valves within the tables: over the range, then the envelopes at each temperature
     const auto column = [&](auto &&value) {
       std::vector<double> c;
       for (const auto &v : r.valves)
-        c.push_back(value(v));
+        if (!(v.flags & ThermalNullShift::outside_tables))
+          c.push_back(value(v));
       return c;
     };
+    if (r.outside_tables == r.valves.size())
+      return r; // no valve to take statistics of, nor a Sobol' study worth its cost
     const auto max_abs = [](const std::vector<double> &list) {
       double m = 0;
       for (double x : list)
@@ -202,6 +239,8 @@ namespace servodrift::system
           [&](const std::vector<double> &row) {
             const ThermalNullShift v = null_only.evaluate(built_valve(model, r.quantities, row));
             const double percent = 100 / r.rated_current;
+            if (v.flags & ThermalNullShift::outside_tables) // no value: the indices are then undefined
+              return std::vector<double>(3, std::numeric_limits<double>::quiet_NaN());
             return std::vector<double>{percent * v.maximum_null_shift, percent * v.null_shift_current.front(),
                                        percent * v.null_shift_current.back()};
           },

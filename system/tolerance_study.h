@@ -46,7 +46,9 @@ namespace servodrift::system
     Interval yield_interval;                ///< exact, at the confidence level
     double confidence_level;
     static inline const std::vector<double> probabilities = {0.01, 0.05, 0.5, 0.95, 0.99};
-    std::vector<MeasureStatistics> statistics;
+    std::vector<MeasureStatistics> statistics;   ///< over the valves within the tables
+    std::size_t outside_tables = 0;             ///< valves the tables do not reach: failing, not evaluated
+    std::string outside_example;                ///< the first of them: its largest deviation and why
     std::optional<SobolStudy> sobol;
 
     double yield() const { return double(passes) / double(valves.size()); }

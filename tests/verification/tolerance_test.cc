@@ -546,3 +546,30 @@ TEST(ToleranceStudy, SeededDraws)
       EXPECT_LT(std::abs(mean), 3 * (1e-6 / std::sqrt(3.0)) / std::sqrt(1000.0)) << int(sampling);
     }
 }
+
+// A tolerance wide enough to put some valves outside the tables (a magnetic null of 1 mrad standard
+// deviation moves the rated operating point beyond the angle range for about 15 % of them) is not a
+// crash of the study: those valves are flagged, fail the spec, have no statistics, and the report's
+// example names the tolerance and its value; the Sobol' design, incomplete, has no indices.
+TEST(ToleranceStudy, ValvesOutsideTheTablesAreCountedAsFailing)
+{
+  Valve v({"Sweeps/Drift temperatures=40, 80, 120", "Tolerances/Samples=100", "Tolerances/Sobol base samples=64",
+           "Tolerances/Magnetic null/Distribution=normal", "Tolerances/Magnetic null/Standard deviation=1e-3"});
+  const ToleranceResults r = compute_tolerances(v.model, OutputParameters::Progress::none);
+  ASSERT_GT(r.outside_tables, 0u);
+  ASSERT_LT(r.outside_tables, r.valves.size());
+  std::size_t flagged = 0;
+  for (std::size_t k = 0; k < r.valves.size(); ++k)
+    if (r.valves[k].flags & ThermalNullShift::outside_tables)
+      {
+        ++flagged;
+        EXPECT_FALSE(r.pass[k]) << k;
+      }
+  EXPECT_EQ(flagged, r.outside_tables);
+  EXPECT_LE(r.passes, r.valves.size() - r.outside_tables);
+  EXPECT_NE(r.outside_example.find("`Tolerances/Magnetic null' = "), std::string::npos) << r.outside_example;
+  ASSERT_TRUE(r.sobol);
+  EXPECT_FALSE(r.sobol->indices[0].defined());
+  EXPECT_NE(r.sobol->indices[0].undefined.find("outside the tables"), std::string::npos) << r.sobol->indices[0].undefined;
+  RecordProperty("valves_outside_the_tables", std::to_string(r.outside_tables));
+}
