@@ -94,6 +94,7 @@ namespace servodrift::system
     , rhs(std::move(rhs_))
     , jacobian(std::move(settings.jacobian))
     , maximum_steps(settings.maximum_steps)
+    , describe_component(std::move(settings.describe_component))
     , context(std::move(context_))
     , y_now(n, 0.0)
   {
@@ -181,10 +182,28 @@ namespace servodrift::system
 
   void TimeIntegrator::count(long steps) const
   {
-    if (steps > maximum_steps)
-      throw std::runtime_error(context + ", t = " + format_number(t_now) + " s: the time integration took more than " +
-                               std::to_string(maximum_steps) + " internal steps (CV_TOO_MUCH_WORK); raise "
-                               "`Dynamics/Maximum steps' or loosen `Dynamics/Relative tolerance'");
+    if (steps <= maximum_steps)
+      return;
+    // the component whose weighted local error estimate is largest is the one that holds the
+    // step down: name what sets its speed
+    std::string limited;
+    const auto &c = *cvode;
+    N_Vector weights = N_VClone(c.y), errors = N_VClone(c.y);
+    if (CVodeGetErrWeights(c.memory, weights) == CV_SUCCESS && CVodeGetEstLocalErrors(c.memory, errors) == CV_SUCCESS)
+      {
+        std::size_t worst = 0;
+        double largest = -1;
+        for (sunindextype k = 0; k < N_VGetLength(c.y); ++k)
+          if (const double e = std::abs(N_VGetArrayPointer(errors)[k] * N_VGetArrayPointer(weights)[k]); e > largest)
+            largest = e, worst = std::size_t(k);
+        limited = "; the steps are held down by " +
+                  (describe_component ? describe_component(worst) : "component " + std::to_string(worst));
+      }
+    N_VDestroy(weights);
+    N_VDestroy(errors);
+    throw std::runtime_error(context + ", t = " + format_number(t_now) + " s: more than " + std::to_string(maximum_steps) +
+                             " internal steps (CV_TOO_MUCH_WORK)" + limited +
+                             ": the entries that make it fast, or `Dynamics/Maximum steps', are what to change");
   }
 
   double TimeIntegrator::step(double t_limit)

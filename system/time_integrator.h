@@ -28,6 +28,9 @@ namespace servodrift::system
       int maximum_order = 5;                   ///< of the BDF formulas
       bool stability_limit_detection = true;   ///< CVODE's BDF stability limit detection (STALD)
       Jacobian jacobian;                       ///< empty: CVODE's own difference quotients
+      /// What sets the speed of a component, for the message when the steps run out (the
+      /// component whose local error holds the step down); empty: its index
+      std::function<std::string(std::size_t component)> describe_component;
     };
 
     struct Statistics
@@ -66,6 +69,7 @@ namespace servodrift::system
     RightHandSide rhs;
     Jacobian jacobian;
     long maximum_steps;
+    std::function<std::string(std::size_t)> describe_component;
     std::string context;
     double t_now = 0;
     std::vector<double> y_now;

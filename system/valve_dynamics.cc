@@ -133,6 +133,20 @@ namespace servodrift::system
     TimeIntegrator::Settings settings;
     settings.relative_tolerance = p.relative_tolerance;
     settings.maximum_steps = p.maximum_steps;
+    settings.describe_component = [](std::size_t k) -> std::string {
+      // the state (model.md 1.20) and the entries that set how fast it can move
+      switch (k)
+        {
+          case 0:
+          case 1: return "the armature (`Armature/Nozzle contact stiffness', `Inertia', `Damping')";
+          case 2:
+          case 3: return "a control pressure (`Pilot stage/Control cavity volume', the oil's bulk modulus)";
+          case 4:
+          case 5: return "the spool (`Spool/Stop stiffness', `Mass', `Laminar transition number')";
+          case 6: return "the brake pressure (`Spool/Minimum leak length', `Radial clearance', `Brake volume')";
+          default: return "the coil current (`Torque motor/Coil inductance')";
+        }
+    };
     for (double s : dynamics.scales())
       settings.absolute_tolerances.push_back(p.absolute_tolerance * s);
     // Forward differences on the whole state, with steps of 1e-7 of max(|y_k|, scale_k): CVODE's own

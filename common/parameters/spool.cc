@@ -44,10 +44,12 @@ namespace servodrift
     prm.declare_entry("Land length", "12e-3", Patterns::Double(0, 1),
                       "Length L of the spool's sealing lands; viscous damping B_v = mu(T) pi d_v L/c_r, "
                       "0.748 N*s/m at 40 degC for RV-1 (2.7, C14; dynamics). [m]");
-    prm.declare_entry("Minimum leak length", "1e-6", Patterns::Double(1e-9, 1e-2),
+    prm.declare_entry("Minimum leak length", "1e-6", Patterns::Double(1e-7, 1e-2),
                       "Floor of the leak length x_ov -+ x_v of the lap leakage (E36, C14), so that the "
                       "leakage stays finite at and beyond the lap edge, where the metering orifice takes "
-                      "over. [m]");
+                      "over. At least 0.1 um: far below the radial clearance, where the laminar leakage "
+                      "law no longer holds anyway, the lap edge's leakage turns so sharp that the "
+                      "dynamics' time steps shrink with it (1e-8 m: over 1e6 steps per response). [m]");
     prm.declare_entry("Laminar transition number", "1000", Patterns::Double(1, 1e6),
                       "lambda_c of the metering edges' tanh blend C_d = C_dv tanh(2 lambda/lambda_c), "
                       "lambda = D_h sqrt(2 dp/rho)/nu with the hydraulic diameter D_h = 2 x the opening "
