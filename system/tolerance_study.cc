@@ -4,8 +4,10 @@
 #include "common/sweep.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <iterator>
 #include <limits>
 
@@ -114,6 +116,56 @@ namespace servodrift::system
       return v;
     }
 
+    /// Seconds per valve of an evaluator, measured on the first few valves of the study
+    double seconds_per_valve(const ValveModel &model, const ToleranceResults &r, const ThermalNullShiftEvaluator &e)
+    {
+      const std::size_t n = std::min<std::size_t>(4, r.inputs.size());
+      const auto start = std::chrono::steady_clock::now();
+      for (std::size_t k = 0; k < n; ++k)
+        e.evaluate(built_valve(model, r.quantities, r.inputs[k]));
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / double(std::max<std::size_t>(n, 1));
+    }
+
+    /// Work that takes long is announced before it starts: the Monte Carlo and the Sobol' design at
+    /// the cost per valve measured on the first valves, shared over the ranks, and the Sobol'
+    /// bootstrap (about 30 ns per output, resample and design row, on every rank).
+    void announce_cost(const ValveModel &model, const ToleranceResults &r, const ThermalNullShiftEvaluator &full,
+                       OutputParameters::Progress progress)
+    {
+      if (progress == OutputParameters::Progress::none)
+        return;
+      const ToleranceParameters &t = model.description().tolerances;
+      const double ranks = double(mpi_size()), per_valve = seconds_per_valve(model, r, full);
+      const double monte_carlo = double(r.inputs.size()) * per_valve / ranks;
+      double sobol = 0;
+      const double design = double(t.sobol_base_samples) * double(r.quantities.size() + 2);
+      if (t.sobol_base_samples > 0)
+        {
+          const ThermalNullShiftEvaluator null_only(model, r.temperatures, false);
+          sobol = design * seconds_per_valve(model, r, null_only) / ranks + 3 * 30e-9 * double(t.bootstrap_size) * design;
+        }
+      const double total = monte_carlo + sobol;
+      if (total < 10 || mpi_rank() != 0)
+        return;
+      const auto duration = [](double seconds) {
+        char text[32];
+        if (seconds < 120)
+          std::snprintf(text, sizeof(text), "%.0f s", seconds);
+        else if (seconds < 7200)
+          std::snprintf(text, sizeof(text), "%.0f min", seconds / 60);
+        else
+          std::snprintf(text, sizeof(text), "%.1f h", seconds / 3600);
+        return std::string(text);
+      };
+      std::cout << "system: tolerance study: about " << duration(total) << " on " << mpi_size() << " rank(s): "
+                << r.inputs.size() << " valves x " << r.temperatures.size() << " temperatures at "
+                << format_number(1e3 * per_valve) << " ms per valve (" << duration(monte_carlo) << ")";
+      if (t.sobol_base_samples > 0)
+        std::cout << ", the Sobol' design of " << format_number(design) << " valves with " << t.bootstrap_size
+                  << " bootstrap resamples (" << duration(sobol) << ")";
+      std::cout << std::endl;
+    }
+
     /// A valve outside the tables, for the report: its index, its largest deviation (in standard
     /// deviations, or half-widths of a uniform) with the entry and value, and the model's reason.
     std::string outside_example(const ValveModel &model, const ToleranceParameters &t,
@@ -169,6 +221,7 @@ namespace servodrift::system
     // Monte Carlo: every measure of every valve
     r.inputs = draw_valves(t);
     const ThermalNullShiftEvaluator full(model, r.temperatures, true);
+    announce_cost(model, r, full, progress);
     const SampleRows values = evaluate_rows(
       "system: tolerance study", r.inputs,
       [&](const std::vector<double> &row) { return pack(full.evaluate(built_valve(model, r.quantities, row))); },
