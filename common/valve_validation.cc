@@ -78,9 +78,14 @@ namespace servodrift
                                       std::abs(v.offsets.magnetic_null));
       }
     if (-sw.motor_angles.front() < contact || sw.motor_angles.back() < contact)
-      refuse("Sweeps/Motor angles", "must reach the nozzle contacts at +-" + format_number(1.001 * contact / units::degree) +
-                                      " deg for the dynamics, where the flapper may hit a nozzle in a transient "
-                                      "(or set `Dynamics/Enabled' = false)");
+      refuse("Sweeps/Motor angles",
+             "must reach the nozzle contacts at +-" + format_number(1.001 * contact / units::degree) +
+               " deg for the dynamics, where the flapper may hit a nozzle in a transient" +
+               (v.offsets.magnetic_null != 0 || v.offsets.hydraulic_null != 0 ?
+                  " (they include `Offsets/Magnetic null' = " + format_number(v.offsets.magnetic_null / units::degree) +
+                    " deg and `Offsets/Hydraulic null' = " + format_number(v.offsets.hydraulic_null) + " m)" :
+                  std::string()) +
+               " (or set `Dynamics/Enabled' = false)");
   }
 
   void validate_table_ranges(const ValveDescription &v)

@@ -194,10 +194,16 @@ namespace servodrift::system
     op.current = i;
     const double n_lo = net_torque(lo), n_hi = net_torque(hi);
     auto table_edge = [&](const char *side) {
+      // an assembly offset is the likelier cause than the grid: name it when there is one
+      const Offsets &o = eq.offsets();
+      const std::string offsets =
+        o.magnetic_null != 0 || o.spring_tube_rest_angle != 0 ?
+          "the offsets theta_m = " + format_number(o.magnetic_null) + " rad, theta_s = " +
+            format_number(o.spring_tube_rest_angle) + " rad put it there (`Offsets', `Tolerances'), or extend " :
+          "extend ";
       return TableRangeError(std::string("the static solution at ") + format_number(T) + " degC, i = " +
-                             format_number(i) + " A lies beyond the " + side +
-                             " end of the tables' angle/gap range (extend `Sweeps/Motor angles' or "
-                             "`Sweeps/Gap fractions')");
+                             format_number(i) + " A lies beyond the " + side + " end of the tables' angle/gap range (" +
+                             offsets + "`Sweeps/Motor angles' or `Sweeps/Gap fractions')");
     };
     const double tolerance = 1e-13 * (hi - lo) + 1e-18;
     if (n_hi >= 0 || n_lo <= 0)
