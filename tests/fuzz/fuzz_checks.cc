@@ -146,11 +146,12 @@ namespace fuzz
     if (o.signal)
       return {{"signal", std::string("killed by signal ") + std::to_string(o.signal) + " (" + strsignal(o.signal) + ")"}};
 
-    const bool usage_allowed = m.category == command_line_category;
-    if (o.exit_code != 0 && o.exit_code != 1 && !(o.exit_code == 2 && usage_allowed))
+    if (o.exit_code != 0 && o.exit_code != 1 && !(o.exit_code == 2 && m.usage_allowed))
       f.push_back({"exit-code", "exit code " + std::to_string(o.exit_code)});
     if (m.expect_success && o.exit_code != 0)
       f.push_back({"refused-valid-input", "valid input refused with exit code " + std::to_string(o.exit_code)});
+    if (m.expect_refusal && o.exit_code == 0)
+      f.push_back({"accepted-bad-input", "input the documentation says is refused ran with exit code 0"});
     if (m.uses_secret && (o.err.find(secret_tag) != std::string::npos || o.out.find(secret_tag) != std::string::npos))
       f.push_back({"secret-echoed", "the included file's secret appears in " +
                                       std::string(o.err.find(secret_tag) != std::string::npos ? "stderr" : "stdout")});

@@ -4,6 +4,7 @@
 #include "fuzz_support.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace fuzz
@@ -53,7 +54,7 @@ namespace fuzz
     l.text = l.indent + "set " + l.name + " = " + value;
   }
 
-  std::vector<JsonValue> json_values(const std::string &json)
+  std::vector<JsonValue> json_values(const std::string &json, const std::string &key)
   {
     std::vector<JsonValue> found;
     std::vector<std::string> stack;
@@ -79,7 +80,7 @@ namespace fuzz
             const bool is_key = after != std::string::npos && json[after] == ':';
             if (is_key)
               last_key = s;
-            else if (last_key == "value")
+            else if (last_key == key)
               {
                 std::string path;
                 for (std::size_t d = 1; d < stack.size(); ++d)
@@ -90,6 +91,36 @@ namespace fuzz
           }
       }
     return found;
+  }
+
+  std::map<std::string, Range> numeric_ranges(const std::string &json)
+  {
+    std::map<std::string, Range> ranges;
+    for (const JsonValue &v : json_values(json, "pattern_description"))
+      {
+        std::string d = json.substr(v.begin + 1, v.end - v.begin - 2);
+        Range r;
+        if (d.rfind("[List of <", 0) == 0)
+          r.list = true, d = d.substr(10);
+        if (d.rfind("[Integer range ", 0) == 0)
+          r.integer = true, d = d.substr(15);
+        else if (d.rfind("[Double ", 0) == 0)
+          d = d.substr(8);
+        else
+          continue;
+        const std::size_t dots = d.find("...");
+        if (dots == std::string::npos)
+          continue;
+        char *end = nullptr;
+        r.lo = std::strtod(d.c_str(), &end);
+        if (end != d.c_str() + dots)
+          continue;
+        r.hi = std::strtod(d.c_str() + dots + 3, &end);
+        if (end == d.c_str() + dots + 3)
+          continue;
+        ranges[v.path] = r;
+      }
+    return ranges;
   }
 
   std::string json_string(const std::string &s)

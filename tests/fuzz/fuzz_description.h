@@ -1,6 +1,7 @@
 #pragma once
 // The valve description's two text forms: the default parameter file as lines, the JSON form's value strings.
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -54,9 +55,21 @@ namespace fuzz
     std::string path;
   };
 
-  /// The "value" strings of `servodrift params --format json', found by a minimal scanner (keys,
-  /// strings, object nesting): enough for the text deal.II writes, no general parser.
-  std::vector<JsonValue> json_values(const std::string &json);
+  /// The `key' strings ("value", "pattern_description") of `servodrift params --format json', found
+  /// by a minimal scanner (keys, strings, object nesting): enough for the text deal.II writes, no
+  /// general parser.
+  std::vector<JsonValue> json_values(const std::string &json, const std::string &key = "value");
+
+  /// The declared range of a numeric entry (or of a list's elements), from its pattern description
+  /// "[Double lo...hi (inclusive)]", "[Integer range lo...hi ...]" or "[List of <[Double ...]> ...]".
+  struct Range
+  {
+    bool integer = false, list = false;
+    double lo = 0, hi = 0;
+  };
+
+  /// Every numeric entry's range by path: the surfaces' mutations put values at and beyond its ends.
+  std::map<std::string, Range> numeric_ranges(const std::string &json);
 
   std::string json_string(const std::string &s);
 } // namespace fuzz

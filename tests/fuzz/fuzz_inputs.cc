@@ -1,27 +1,40 @@
 // fuzz_inputs: a small, seeded fuzz driver of servodrift's promises for bad input (README "Using it",
 // issue 24). Each run writes one randomly mutated valve description (or command line), runs
-// `servodrift run' on it in a child process with a timeout and checks what the product promises:
+// `servodrift run' on it in a child process with a timeout and checks what the product promises;
+// the newer surfaces (issue 62) likewise: `servodrift tolerances' and `dynamics' with hostile entries,
+// `calibrate' with hostile measured-data files and --free entries, each on a copy of the pre-filled
+// output directory, whose tables they read:
 //   - it ends by itself with exit code 0 or 1 (2 only for command-line usage errors): no signal, no hang;
 //   - on a non-zero exit, stderr is exactly one printable-ASCII line of at most 400 characters starting
 //     "servodrift: error:" or "servodrift: usage error:", and the output directory is as it was;
 //   - on exit 0 no .csv, .json or .md result holds a non-finite number;
 //   - never a leftover temporary file or undo directory, never an echo of an included file's secret;
 //   - a valid valve file placed after the --set options runs (apps/servodrift.cc: --set takes one
-//     value per occurrence "so that the valve file may follow the options").
+//     value per occurrence "so that the valve file may follow the options"); valid measured data
+//     calibrate; input the documentation says is refused (a NUL in a measured cell, a --free entry
+//     outside its range, ...) is refused.
 // Standard library and POSIX only, so that it builds without the product's dependencies and judges the
 // binary from the outside. Every run draws from its own generator seeded by (seed, run index): run k of
 // seed s is the same mutation whatever --runs or --seconds say, and a failure is saved as a directory
 // with the input and a cmd.sh that replays it.
 //
-//   fuzz_inputs --servodrift PATH --work DIR [--seed N] [--runs N] [--seconds S] [--timeout S]
+//   fuzz_inputs --servodrift PATH --work DIR [--seed N] [--runs N] [--seconds S] [--timeout S] [--kinds K,...]
+//               [--verbose] [--dry-run]
+// --verbose prints every run's mutation and outcome; --dry-run only lists the mutations (which kinds
+// the first runs of a seed draw, for the ctest short mode).
+// --kinds limits the mutation kinds (value, structure, json, command-line, tolerances, dynamics,
+// calibrate; default all): run k of seed s is the same for the same --kinds.
 #include "fuzz_checks.h"
 #include "fuzz_mutations.h"
 #include "fuzz_process.h"
 #include "fuzz_support.h"
+#include "fuzz_surfaces.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -48,21 +61,30 @@ namespace
     long runs = 40;
     double seconds = 0; ///< 0: no time budget
     double timeout = 60;
+    std::array<bool, n_categories> kinds{}; ///< the mutation kinds drawn
+    bool verbose = false;                   ///< a line for every run, not only the failed ones
+    bool dry_run = false;                   ///< list the runs' mutations, run none of them
   };
 
   [[noreturn]] void usage(const std::string &problem)
   {
     std::cerr << "fuzz_inputs: " << problem << "\nusage: fuzz_inputs --servodrift PATH --work DIR [--seed N] [--runs N] "
-                                                "[--seconds S] [--timeout S]\n";
+                                                "[--seconds S] [--timeout S] [--kinds K,...] [--verbose] [--dry-run]\n";
     std::exit(2);
   }
 
   Options parse_options(int argc, char **argv)
   {
     Options o;
+    o.kinds.fill(true);
     for (int k = 1; k < argc; ++k)
       {
         const std::string a = argv[k];
+        if (a == "--verbose" || a == "--dry-run")
+          {
+            (a == "--verbose" ? o.verbose : o.dry_run) = true;
+            continue;
+          }
         if (k + 1 >= argc)
           usage("option " + a + " needs a value");
         const std::string v = argv[++k];
@@ -80,6 +102,22 @@ namespace
               o.seconds = std::stod(v);
             else if (a == "--timeout")
               o.timeout = std::stod(v);
+            else if (a == "--kinds")
+              {
+                o.kinds.fill(false);
+                std::istringstream list(v);
+                for (std::string kind; std::getline(list, kind, ',');)
+                  {
+                    std::size_t n = 0;
+                    while (n < n_categories && kind != category_names[n])
+                      ++n;
+                    if (n == n_categories)
+                      usage("unknown mutation kind `" + kind + "' in --kinds");
+                    o.kinds[n] = true;
+                  }
+                if (std::find(o.kinds.begin(), o.kinds.end(), true) == o.kinds.end())
+                  usage("--kinds names no mutation kind");
+              }
             else
               usage("unknown option " + a);
           }
@@ -122,6 +160,7 @@ namespace
       fatal("`servodrift params' printed no `set' line", o);
     for (auto k : c.prm.entries)
       c.values.push_back(c.prm.lines[k].value);
+    c.ranges = numeric_ranges(c.json_text);
 
     const std::vector<std::pair<std::string, std::string>> wanted{
       {"Torque motor/Model level", "reduced-order"}, {"Spring tube/Model level", "reduced-order"},
@@ -148,6 +187,13 @@ namespace
     write_file(work / "prefill" / "sentinel.txt", "a file of the user's: a refused run must leave it as it is\n");
     fs::create_directories(work / "prefill" / "notes");
     write_file(work / "prefill" / "notes" / "sentinel.csv", "x,y\n1,2\n");
+    std::error_code ec;
+    for (const auto &e : fs::directory_iterator(work / "prefill" / "tables", ec))
+      if (e.is_regular_file())
+        c.tables["tables/" + e.path().filename().string()] = read_file(e.path());
+    if (opt.kinds[calibrate_category])
+      if (const std::string problem = make_measured_data(c, work, opt.timeout, o); !problem.empty())
+        fatal(problem, o);
     return c;
   }
 
@@ -161,6 +207,8 @@ namespace
     s << "cd \"$(dirname \"$0\")\" || exit 1\nrm -rf out\n";
     if (prefilled)
       s << "cp -a ../../prefill out  # the output directory was pre-filled\n";
+    if (!m.out_files.empty())
+      s << "cp -a out-files/. out/  # with broken tables\n";
     if (!m.fifo.empty())
       s << "[ -p " << sh_quote(m.fifo) << " ] || mkfifo " << sh_quote(m.fifo) << "\n";
     if (!m.directory.empty())
@@ -193,7 +241,7 @@ namespace
   void one_run(const Options &opt, const Context &c, const fs::path &work, long index, Tally &tally)
   {
     Rng rng(opt.seed, static_cast<std::uint64_t>(index));
-    const Mutation m = mutation(rng, c);
+    const Mutation m = mutation(rng, c, opt.kinds);
     const fs::path dir = work / "runs" / ("run-" + std::to_string(index));
     fs::remove_all(dir);
     fs::create_directories(dir);
@@ -203,10 +251,17 @@ namespace
       std::perror("fuzz_inputs: mkfifo");
     if (!m.directory.empty())
       fs::create_directories(dir / m.directory);
-    // half the runs: no output directory; the other half: a previous run's results and sentinels
-    const bool prefilled = index % 2 == 1;
+    // half the runs: no output directory; the other half: a previous run's results and sentinels; the
+    // surfaces always the latter (its tables)
+    const bool prefilled = m.tables || index % 2 == 1;
     if (prefilled)
       fs::copy(work / "prefill", dir / "out", fs::copy_options::recursive | fs::copy_options::copy_symlinks);
+    for (const auto &[name, content] : m.out_files) // broken tables: in out/, and beside it for cmd.sh
+      for (const fs::path &to : {dir / "out" / name, dir / "out-files" / name})
+        {
+          fs::create_directories(to.parent_path());
+          write_file(to, content);
+        }
     const Snapshot before = snapshot(dir / "out");
 
     std::vector<std::string> argv{c.servodrift};
@@ -217,6 +272,14 @@ namespace
     ++tally.runs;
     ++tally.exits[exit_label(o)];
     ++tally.by_category[category_names[m.category]];
+    if (opt.verbose)
+      {
+        char seconds[32];
+        std::snprintf(seconds, sizeof(seconds), "%.1f s", o.seconds);
+        std::cout << "run " << index << " (" << category_names[m.category] << ": " << shown(m.description, 300) << "): "
+                  << exit_label(o) << ", " << seconds
+                  << (o.exit_code > 0 ? ": " + shown(o.err.substr(0, o.err.find('\n')), 200) : std::string()) << std::endl;
+      }
     if (failures.empty())
       {
         fs::remove_all(dir);
@@ -255,7 +318,7 @@ int main(int argc, char **argv)
   const fs::path work = fs::absolute(opt.work);
   fs::create_directories(work);
   // only what this driver writes is cleared: a previous invocation's runs and findings
-  for (const char *d : {"runs", "failures", "prefill"})
+  for (const char *d : {"runs", "failures", "prefill", "measured-source"})
     fs::remove_all(work / d);
 
   const auto start = std::chrono::steady_clock::now();
@@ -277,6 +340,14 @@ int main(int argc, char **argv)
           std::cout << "note: " << opt.servodrift << " was rebuilt before run " << k
                     << ": this run and the later ones test the new binary" << std::endl;
           built = now;
+        }
+      if (opt.dry_run)
+        {
+          Rng rng(opt.seed, static_cast<std::uint64_t>(k));
+          const Mutation m = mutation(rng, c, opt.kinds);
+          ++tally.by_category[category_names[m.category]];
+          std::cout << "run " << k << " (" << category_names[m.category] << ": " << shown(m.description, 300) << ")\n";
+          continue;
         }
       one_run(opt, c, work, k, tally);
     }

@@ -1,6 +1,7 @@
 // The mutation kinds: bad values, broken structure, a broken JSON form, odd command lines.
 #include "fuzz_mutations.h"
 
+#include "fuzz_surfaces.h"
 #include "fuzz_values.h"
 
 #include <algorithm>
@@ -251,6 +252,7 @@ namespace fuzz
     {
       Mutation m;
       m.category = command_line_category;
+      m.usage_allowed = true;
       m.files["input.prm"] = c.prm_text;
       m.args = usual_args(c, "input.prm");
       const PrmLine &e = c.prm.lines[rng.pick(c.prm.entries)];
@@ -339,16 +341,30 @@ namespace fuzz
     }
   } // namespace
 
-  Mutation mutation(Rng &rng, const Context &c)
+  Mutation mutation(Rng &rng, const Context &c, const std::array<bool, n_categories> &enabled)
   {
-    // values and structure are where most bugs hide: weight them higher
-    const std::uint64_t r = rng.below(20);
-    if (r < 7)
-      return value_mutation(rng, c);
-    if (r < 12)
-      return structure_mutation(rng, c);
-    if (r < 15)
-      return json_mutation(rng, c);
-    return command_line_mutation(rng, c);
+    // values and structure are where most bugs hide: weight them higher; with the first four kinds
+    // alone the draw is the one before the surfaces were added, so old seeds replay
+    const std::array<std::uint64_t, n_categories> weight{7, 5, 3, 5, 5, 4, 6};
+    std::uint64_t total = 0;
+    for (int k = 0; k < n_categories; ++k)
+      total += enabled[k] ? weight[k] : 0;
+    std::uint64_t r = rng.below(total);
+    int kind = 0;
+    for (; kind < n_categories - 1; ++kind)
+      if (enabled[kind] && r < weight[kind])
+        break;
+      else if (enabled[kind])
+        r -= weight[kind];
+    switch (kind)
+      {
+        case value_category: return value_mutation(rng, c);
+        case structure_category: return structure_mutation(rng, c);
+        case json_category: return json_mutation(rng, c);
+        case command_line_category: return command_line_mutation(rng, c);
+        case tolerances_category: return tolerances_mutation(rng, c);
+        case dynamics_category: return dynamics_mutation(rng, c);
+        default: return calibrate_mutation(rng, c);
+      }
   }
 } // namespace fuzz
