@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Long mode of the fuzz driver of bad input (tests/fuzz/fuzz_inputs.cc; ctest's cli.fuzz_inputs and
-# cli.fuzz_surfaces run 30 runs of seed 1 each): many runs of any seed, of every mutation kind or of
-# those named (value,structure,json,command-line for `run', tolerances,dynamics,calibrate for the
-# newer surfaces). Failures are kept, with a cmd.sh that replays each, under <work>/failures/; the
-# seed is printed so that the same runs can be repeated (with the same kinds).
+# cli.fuzz_surfaces run up to 30 runs of seeds 1 and 5): many runs of any seed, of every mutation
+# kind or of those named (value,structure,json,command-line for `run', tolerances,dynamics,calibrate
+# for the newer surfaces). Failures are kept, with a cmd.sh that replays each, under
+# <work>/failures/; the seed is printed so that the same runs can be repeated (with the same kinds).
 #   bench/fuzz_inputs.sh [build-dir] [runs] [seed] [work-dir] [timeout-s] [kinds]
 # Build the driver first: cmake --build build --target fuzz_inputs
 set -eu

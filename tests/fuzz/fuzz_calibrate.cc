@@ -1,72 +1,13 @@
 // The calibration's mutations: a valid measured-data file (made by the model, doc/user-guide.md
 // section 6) broken in one way (not a regular file, bytes, NUL, order, non-finite or overflowing
 // numbers, standard deviations, rows, columns, units), or hostile --free entries and start values.
+#include "fuzz_measured.h"
 #include "fuzz_surfaces.h"
-
-#include <cstdio>
 
 namespace fuzz
 {
   namespace
   {
-    std::string num(double x)
-    {
-      char b[40];
-      std::snprintf(b, sizeof(b), "%.9g", x);
-      return b;
-    }
-
-    /// A measured-data CSV file as cells, so that one cell, row or header item can be broken.
-    struct Measured
-    {
-      std::vector<std::string> header;
-      std::vector<std::vector<std::string>> rows;
-
-      std::string text() const
-      {
-        std::string s = "# measured drift of a valve (fuzz_inputs)\n" + line(header);
-        for (const auto &row : rows)
-          s += line(row);
-        return s;
-      }
-
-      static std::string line(const std::vector<std::string> &cells)
-      {
-        std::string s;
-        for (std::size_t k = 0; k < cells.size(); ++k)
-          s += (k ? "," : "") + cells[k];
-        return s + "\n";
-      }
-    };
-
-    /// The valid file in one of three forms: null-shift currents in mA with standard deviations, in A
-    /// without (tests/cli/calibrate_example.sh), or with brake pressures at the rated current in MPa too.
-    Measured valid_data(const Context &c, int form)
-    {
-      Measured d;
-      const auto &T = c.measured_temperatures;
-      if (form == 1)
-        {
-          d.header = {"temperature[degC]", "current[A]", "null_shift_current[A]"};
-          for (std::size_t k = 0; k < T.size(); ++k)
-            d.rows.push_back({num(T[k]), "0", num(c.measured_null_shift[k])});
-          return d;
-        }
-      d.header = {"temperature[degC]", "current[mA]", "null_shift_current[mA]", "null_shift_current_sd[mA]"};
-      if (form == 2)
-        d.header.insert(d.header.end(), {"brake_pressure[MPa]", "brake_pressure_sd[MPa]"});
-      for (std::size_t k = 0; k < T.size(); ++k)
-        {
-          d.rows.push_back({num(T[k]), "0", num(c.measured_null_shift[k] * 1e3), "0.0001"});
-          if (form == 2)
-            d.rows.back().insert(d.rows.back().end(), {"", ""});
-        }
-      if (form == 2)
-        for (std::size_t k = 0; k < T.size(); ++k)
-          d.rows.push_back({num(T[k]), num(c.rated_current * 1e3), "", "", num(c.measured_brake_pressure[k] * 1e-6), "0.001"});
-      return d;
-    }
-
     std::string &any_cell(Rng &rng, Measured &d, bool numeric_only)
     {
       for (;;)
@@ -381,8 +322,28 @@ namespace fuzz
             break;
           }
         default:
-          switch (rng.below(4))
+          switch (rng.below(6))
             {
+              case 4:
+                {
+                  // a name the refusal must not echo raw: a newline, Latin-1 bytes, 240 characters, a dash
+                  const std::vector<std::string> names{"m\neasured.csv", "m\xe9sur\xe9.csv", std::string(240, 'm') + ".csv",
+                                                       "-measured.csv", "no/such/dir/measured.csv", "measured.csv\r"};
+                  measured = rng.pick(names);
+                  write = measured.find('/') == std::string::npos;
+                  usage = measured[0] == '-', refuse = !write || usage;
+                  label = "measured file named `" + shown(measured) + "'";
+                  break;
+                }
+              case 5:
+                {
+                  const std::vector<std::string> odd{"Offsets/Magnetic null\nOffsets/Spring tube rest angle", "Offsets/M\xe4gnetic null",
+                                                     "Offsets/Magnetic null=\xff:\xfe", "Offsets/" + std::string(50000, 'x'),
+                                                     "Offsets/Magnetic null=-1:" + std::string(50000, '1')};
+                  free = {rng.pick(odd)};
+                  label = "--free `" + shown(free[0]) + "'";
+                  break;
+                }
               case 0: usage = true, label = "no measured file on the command line"; break;
               case 1: free.clear(), refuse = false, label = "no --free entry"; break;
               case 2: refuse = false, label = "the valve file given as the measured data"; m.files[measured] = c.prm_text, write = false; break;

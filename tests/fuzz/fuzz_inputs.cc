@@ -25,10 +25,10 @@
 // --kinds limits the mutation kinds (value, structure, json, command-line, tolerances, dynamics,
 // calibrate; default all): run k of seed s is the same for the same --kinds.
 #include "fuzz_checks.h"
+#include "fuzz_measured.h"
 #include "fuzz_mutations.h"
 #include "fuzz_process.h"
 #include "fuzz_support.h"
-#include "fuzz_surfaces.h"
 
 #include <sys/stat.h>
 #include <unistd.h>

@@ -1,13 +1,60 @@
 // Valid measured drift data for the calibrate mutations, made by the product itself: a run with a
 // known magnetic null, whose drift map gives the values a bench would measure.
-#include "fuzz_process.h"
-#include "fuzz_surfaces.h"
+#include "fuzz_measured.h"
 
+#include <cstdio>
 #include <map>
 #include <sstream>
 
 namespace fuzz
 {
+  std::string num(double x)
+  {
+    char b[40];
+    std::snprintf(b, sizeof(b), "%.9g", x);
+    return b;
+  }
+
+  std::string Measured::text() const
+  {
+    const auto line = [](const std::vector<std::string> &cells) {
+      std::string s;
+      for (std::size_t k = 0; k < cells.size(); ++k)
+        s += (k ? "," : "") + cells[k];
+      return s + "\n";
+    };
+    std::string s = "# measured drift of a valve (fuzz_inputs)\n" + line(header);
+    for (const auto &row : rows)
+      s += line(row);
+    return s;
+  }
+
+  Measured valid_data(const Context &c, int form)
+  {
+    Measured d;
+    const auto &T = c.measured_temperatures;
+    if (form == 1)
+      {
+        d.header = {"temperature[degC]", "current[A]", "null_shift_current[A]"};
+        for (std::size_t k = 0; k < T.size(); ++k)
+          d.rows.push_back({num(T[k]), "0", num(c.measured_null_shift[k])});
+        return d;
+      }
+    d.header = {"temperature[degC]", "current[mA]", "null_shift_current[mA]", "null_shift_current_sd[mA]"};
+    if (form == 2)
+      d.header.insert(d.header.end(), {"brake_pressure[MPa]", "brake_pressure_sd[MPa]"});
+    for (std::size_t k = 0; k < T.size(); ++k)
+      {
+        d.rows.push_back({num(T[k]), "0", num(c.measured_null_shift[k] * 1e3), "0.0001"});
+        if (form == 2)
+          d.rows.back().insert(d.rows.back().end(), {"", ""});
+      }
+    if (form == 2) // the brake-pressure series at the rated current, its null-shift cells empty
+      for (std::size_t k = 0; k < T.size(); ++k)
+        d.rows.push_back({num(T[k]), num(c.rated_current * 1e3), "", "", num(c.measured_brake_pressure[k] * 1e-6), "0.001"});
+    return d;
+  }
+
   std::string make_measured_data(Context &c, const fs::path &work, double timeout, Outcome &o)
   {
     // a magnetic null of 0.02 degree, as tests/cli/calibrate_example.sh makes its data: the fit from 0

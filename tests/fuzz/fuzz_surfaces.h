@@ -3,7 +3,6 @@
 // of the pre-filled output directory (it holds the coefficient tables they read), with hostile entries
 // of their subsections and, for `calibrate', hostile measured-data files and --free entries.
 #include "fuzz_mutations.h"
-#include "fuzz_process.h"
 #include "fuzz_values.h"
 
 #include <string>
@@ -41,10 +40,6 @@ namespace fuzz
   void surface_args(Rng &rng, const Context &c, Mutation &m, const std::string &command,
                     const std::vector<std::string> &positionals, const std::vector<Setting> &base,
                     const std::vector<Setting> &hostile);
-
-  /// Fills c's measured data from the drift map of a run in `work' with a known magnetic null; returns
-  /// what went wrong ("" if nothing), with that run's outcome in `o'.
-  std::string make_measured_data(Context &c, const fs::path &work, double timeout, Outcome &o);
 
   Mutation tolerances_mutation(Rng &rng, const Context &c);
   Mutation dynamics_mutation(Rng &rng, const Context &c);
