@@ -16,6 +16,7 @@
 #include "common/parameters/flow_solver.h"
 #include "flow/boundary_conditions.h"
 #include "flow/flow_state.h"
+#include "flow/newton_ptc.h"
 
 #include <functional>
 #include <map>
@@ -113,6 +114,11 @@ namespace servodrift::flow
     SolveReport solve_to(double tolerance, bool consult_monitor,
                          const std::function<bool(const Residuals &)> &decided = {});
     std::string failure_output;
+    /// Newton-PTC (newton_flow.cc): the same steady discrete equations as solve() (momentum,
+    /// continuity, Rhie-Chow's face fluxes, the extrapolated wall pressures) as one system, from the
+    /// current fields, to `settings.tolerance' of the scaled residual. Laminar and single phase
+    /// (std::invalid_argument otherwise). The fields are left at the last accepted state.
+    PtcReport solve_newton(const PtcSettings &settings);
 
     /// Time stepping, laminar (time_stepping.cc): one step of dt [s] from the current fields, second-
     /// order backward differences (BDF2) after a first implicit Euler step at the same dt (any other
@@ -167,6 +173,7 @@ namespace servodrift::flow
 
   private:
     struct Implementation;
+    class NewtonProblem; ///< the residual and Jacobian of solve_newton
     std::unique_ptr<Implementation> impl;
   };
 } // namespace servodrift::flow

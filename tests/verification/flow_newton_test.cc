@@ -1,0 +1,85 @@
+// Newton-PTC (flow/newton_flow.cc) solves the steady discrete equations of
+// SIMPLEC as one system: started from SIMPLEC's own path partway, it must land
+// on SIMPLEC's converged fields, and converge to a scaled residual of 1e-10
+// with Newton's quadratic rate at the end.
+#include "flow/simplec.h"
+#include "flow_test_domains.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace servodrift;
+using namespace servodrift::flow;
+using namespace servodrift::flow::domains;
+
+namespace
+{
+  /// The largest velocity difference over the largest speed, and the pressure
+  /// difference over the largest pressure difference in the field.
+  struct Difference
+  {
+    double velocity, pressure;
+  };
+  Difference difference(const FvMesh &mesh, const SimplecSolver &a, const SimplecSolver &b)
+  {
+    double speed = 0, du = 0, p_min = 1e300, p_max = -1e300, dp = 0;
+    for (std::size_t c = 0; c < mesh.n_cells(); ++c)
+      {
+        speed = std::max(speed, std::hypot(a.velocity_x()[c], a.velocity_y()[c]));
+        du = std::max(
+            {du, std::abs(a.velocity_x()[c] - b.velocity_x()[c]), std::abs(a.velocity_y()[c] - b.velocity_y()[c])});
+        p_min = std::min(p_min, a.pressure()[c]), p_max = std::max(p_max, a.pressure()[c]);
+        dp = std::max(dp, std::abs(a.pressure()[c] - b.pressure()[c]));
+      }
+    return {du / speed, dp / (p_max - p_min)};
+  }
+
+  void lands_on_simplec(const FvMesh &mesh, const std::map<std::string, BoundaryCondition> &bc,
+                        const FluidProperties &fluid, const char *name)
+  {
+    SimplecSolver reference(mesh, fluid, bc, settings(1e-10)), newton(mesh, fluid, bc, settings(1e-10));
+    reference.solve();
+    newton.solve_to(1e-2, false);
+    const PtcReport r = newton.solve_newton({});
+    std::printf("%s: %s in %u steps (%u Jacobians of %u colours, %u residuals); norm", name,
+                to_string(r.outcome).c_str(), r.steps, r.jacobians, r.colours, r.residual_evaluations);
+    for (double h : r.history)
+      std::printf(" %.1e", h);
+    const Difference d = difference(mesh, reference, newton);
+    std::printf("\n  fields against SIMPLEC's: velocity %.1e, pressure %.1e\n", d.velocity, d.pressure);
+    EXPECT_EQ(r.outcome, PtcOutcome::converged) << name;
+    EXPECT_LT(d.velocity, 1e-7) << name;
+    EXPECT_LT(d.pressure, 1e-7) << name;
+  }
+} // namespace
+
+TEST(FlowNewton, LandsOnSimplecsFieldsInAPipe)
+{
+  const double U = 1, R = 1;
+  lands_on_simplec(rectangle(Geometry::axisymmetric, 0, 4, 0, R, 40, 10),
+                   pipe_boundaries(BoundaryCondition::velocity_inlet(
+                       [&](const Vector2 &x) { return Vector2(2 * U * (1 - x.y() * x.y() / (R * R)), 0); })),
+                   {1, 0.01}, "pipe, Re 200");
+}
+
+TEST(FlowNewton, LandsOnSimplecsFieldsBetweenPressureBoundaries)
+{
+  lands_on_simplec(rectangle(Geometry::axisymmetric, 0, 2, 0, 1, 40, 20),
+                   {{"left", BoundaryCondition::total_pressure_inlet(0.5)},
+                    {"right", BoundaryCondition::pressure_outlet(0)},
+                    {"top", BoundaryCondition::wall()},
+                    {"bottom", BoundaryCondition::axis()}},
+                   {1, 0.01}, "total-pressure inlet");
+}
+
+TEST(FlowNewton, LandsOnSimplecsFieldsInTheCavity)
+{
+  lands_on_simplec(rectangle(Geometry::planar, 0, 1, 0, 1, 24, 24),
+                   {{"top", BoundaryCondition::wall(Vector2(1, 0))},
+                    {"left", BoundaryCondition::wall()},
+                    {"right", BoundaryCondition::wall()},
+                    {"bottom", BoundaryCondition::wall()}},
+                   {1, 0.01}, "cavity, Re 100");
+}
