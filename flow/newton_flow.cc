@@ -1,24 +1,18 @@
-// SimplecSolver::solve_newton: the steady discrete equations of the SIMPLEC
-// solver as one residual R(x) = 0 of all unknowns, solved by Newton-PTC
-// (newton_ptc.h) with a Jacobian of finite differences coloured by the stencil
-// (doc/method.md, "Newton-PTC"). Laminar and single phase for now.
+// SimplecSolver::solve_newton: the steady discrete equations of the SIMPLEC solver as one residual
+// R(x) = 0 of all unknowns, solved by Newton-PTC (newton_ptc.h) with a Jacobian of finite differences
+// coloured by the stencil (doc/method.md, "Newton-PTC"). Laminar and single phase for now.
 //
 // The unknowns, in this order:
 //   u, v, p per cell;
-//   F per face: the face flux, an unknown of its own as in SIMPLEC, where the
-//   momentum equations
+//   F per face: the face flux, an unknown of its own as in SIMPLEC, where the momentum equations
 //     convect with F and Rhie-Chow's D = V/a_P depends on F through a_P;
-//   p_b per boundary face that is not a pressure boundary: the pressure
-//   extrapolated with the
-//     least-squares gradient, which itself reads p_b (SIMPLEC lags it by an
-//     iteration).
+//   p_b per boundary face that is not a pressure boundary: the pressure extrapolated with the
+//     least-squares gradient, which itself reads p_b (SIMPLEC lags it by an iteration).
 // The equations, one per unknown:
-//   momentum   A(F) u - b(u, p) = 0 (the assembled equations of
-//   momentum_equation.h, unrelaxed:
-//              relaxation changes A and b but not b - A u at the current u);
+//   momentum   A(F) u - b(u, p) = 0, the assembled equations of momentum_equation.h (relaxation
+//              changes A and b but not A u - b at the current u);
 //   continuity sum_f F_f = 0 per cell;
-//   face flux  F_f - RC_f(u, v, p, p_b; D(F)) = 0 (rhie_chow.h; walls: F = 0;
-//   velocity inlets: F_f
+//   face flux  F_f - RC_f(u, v, p, p_b; D(F)) = 0 (rhie_chow.h; walls F = 0; velocity inlets F_f
 //              their given flux);
 //   wall p     p_b - max(p_P + grad p_P . (x_f - x_P), p_floor) = 0.
 #include "flow/continuity.h"
@@ -68,6 +62,7 @@ namespace servodrift::flow
     std::vector<std::size_t> extrapolated_face; ///< faces whose p_b is an unknown, in unknown order
     // per unknown: the rows that may depend on it (CSR), and its colour
     std::vector<std::size_t> reach_offset, reach_row;
+    std::vector<char> in_pattern; ///< per reach entry: in the Jacobian's pattern
     std::vector<unsigned int> colour_of;
     unsigned int n_colours = 0;
     // the scales of the last residual at the unperturbed state
@@ -143,6 +138,7 @@ namespace servodrift::flow
           row_seen[reach_row[k]] = 0;
         reach_offset.push_back(reach_row.size());
       }
+    in_pattern.assign(reach_row.size(), 0);
     // greedy colouring: two unknowns of one colour never reach the same row
     std::vector<std::vector<std::uint64_t>> used(n_unknowns); // per row: a bitset of the colours reaching it
     colour_of.assign(n_unknowns, 0);
@@ -294,7 +290,11 @@ namespace servodrift::flow
               {
                 const std::size_t i = reach_row[k];
                 const double value = (Rp[i] - R[i]) / step[j];
+                // an entry once seen stays in the pattern (zero or not), so that the LU's
+                // symbolic analysis is kept from one Jacobian to the next
                 if (value != 0 || i == j)
+                  in_pattern[k] = 1;
+                if (in_pattern[k])
                   entries.emplace_back(i, j, value);
               }
             xp[j] = x[j];

@@ -1,16 +1,15 @@
 #pragma once
-// Newton's method globalised by pseudo-transient continuation (PTC; Kelley and
-// Keyes, SIAM J. Numer. Anal. 35 (1998) 508) for a steady discrete problem R(x)
-// = 0:
+// Newton's method globalised by pseudo-transient continuation (PTC; Kelley and Keyes, SIAM J.
+// Numer. Anal. 35 (1998) 508) for a steady discrete problem R(x) = 0:
 //   (P / dtau_k + J(x_k)) dx = -R(x_k),   x_(k+1) = x_k + lambda dx,
-// P a non-negative diagonal (the pseudo-time's mass: zero on algebraic rows
-// such as continuity), J = dR/dx, and the pseudo step by switched evolution
-// relaxation (SER, Mulder and van Leer 1985): CFL_k = CFL_0 ||R_0|| / ||R_k||,
-// so that the step grows to Newton's as the residual falls. A step whose
-// residual norm grows by more than `Growth allowed' is halved (lambda) and, if
-// halving does not help, retried with a ten times smaller CFL. The linear
-// system is factorised by UMFPACK (sparse LU), its symbolic analysis kept while
-// the pattern stays the same. Outcomes are values (PtcOutcome).
+// P a non-negative diagonal (the pseudo time's mass: zero on algebraic rows such as continuity),
+// J = dR/dx, and the pseudo step by switched evolution relaxation (SER, Mulder and van Leer 1985):
+// CFL_k = CFL_0 ||R_0|| / ||R_k||, so that the step grows to Newton's as the residual falls. A step
+// whose norm grows by more than `growth_allowed' is halved (lambda) and, if halving does not help,
+// retried with a ten times smaller CFL. While steps contract well, the next reuses the last
+// factorisation (a chord step) before a new Jacobian is made. The linear system is factorised by
+// UMFPACK (sparse LU), its symbolic analysis kept while the pattern stays the same. Outcomes are
+// values (PtcOutcome).
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -42,6 +41,8 @@ namespace servodrift::flow
     double tolerance = 1e-10;  ///< on the scaled norm [1]
     unsigned int max_steps = 200;
     double growth_allowed = 1.0; ///< a step may raise the norm by this factor and still stand [1]
+    /// chord steps (the last LU again) while each step cuts the norm at least by this factor [1]
+    double chord_contraction = 0.25;
   };
 
   enum class PtcOutcome
@@ -55,10 +56,13 @@ namespace servodrift::flow
   {
     PtcOutcome outcome = PtcOutcome::stalled;
     unsigned int steps = 0, residual_evaluations = 0, jacobians = 0;
-    unsigned int colours = 0;    ///< residual evaluations per Jacobian (a coloured
-                                 ///< finite-difference one)
-    double norm = 0;             ///< of the final state
-    std::vector<double> history; ///< the norm after each accepted step (the start first)
+    unsigned int chord_steps = 0; ///< steps with an earlier Jacobian's LU
+    unsigned int colours = 0;
+    std::size_t jacobian_entries = 0; ///< non-zeros of the last Jacobian
+    std::size_t unknowns = 0;         ///< residual evaluations per Jacobian (a coloured
+                                      ///< finite-difference one)
+    double norm = 0;                  ///< of the final state
+    std::vector<double> history;      ///< the norm after each accepted step (the start first)
     double jacobian_seconds = 0, factorisation_seconds = 0, residual_seconds = 0;
   };
 

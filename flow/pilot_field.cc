@@ -435,5 +435,6 @@ namespace servodrift::flow
   double PilotField::bore_radius() const { return impl->bore_radius; }
   double PilotField::ideal_reynolds_number(double dp) const { return impl->ideal_reynolds_number(dp); }
   const SimplecSolver &PilotField::solver() const { return impl->solver; }
+  SimplecSolver &PilotField::solver() { return impl->solver; }
   const FvMesh &PilotField::mesh() const { return impl->mesh; }
 } // namespace servodrift::flow

@@ -109,6 +109,7 @@ namespace servodrift::flow
     /// E17) or 2 h sqrt(2 dp/rho)/nu (nozzle: E18 with C_dn = 1 and D_h = 2h).
     double ideal_reynolds_number(double pressure_difference) const;
     const SimplecSolver &solver() const;
+    SimplecSolver &solver(); ///< the case's solver itself (another steady solver on its fields)
     const FvMesh &mesh() const;
 
   private:

@@ -65,7 +65,8 @@ namespace servodrift::flow
         if (mesh.neighbour[f] < 0 && d.boundaries.kind(f) == BoundaryCondition::Kind::velocity_inlet)
           continue; // fixed by its condition
         if (with_fluxes) // the face fluxes scale with the face areas of this mesh (same topology, other dimensions)
-          s.flux[f] = o.flux[f] * mesh.face_area[f] / o.face_area[f] * rho / o.density;
+          // (a face of no area, on the axis, carries none: not 0/0)
+          s.flux[f] = o.face_area[f] > 0 ? o.flux[f] * mesh.face_area[f] / o.face_area[f] * rho / o.density : 0.0;
         else // fields carried from another mesh (transfer_fields): fluxes of the face velocities
           {
             const unsigned int P = mesh.owner[f];
