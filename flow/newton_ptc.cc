@@ -18,6 +18,8 @@ namespace servodrift::flow
     constexpr double smallest_cfl_ratio = 1e-8;
     /// step halvings before the CFL is cut
     constexpr unsigned int max_halvings = 3;
+    /// accepted steps over which the norm must at least halve
+    constexpr std::size_t stall_window = 10;
 
     bool same_pattern(const Eigen::SparseMatrix<double> &a, const Eigen::SparseMatrix<double> &b)
     {
@@ -70,7 +72,13 @@ namespace servodrift::flow
     Eigen::SparseMatrix<double> analysed_pattern;
     bool factorised = false;
     double last_contraction = 1; ///< the norm's ratio over the last accepted step
-    while (norm > settings.tolerance && report.steps < settings.max_steps)
+    // a stall: the norm not halved over the last stall_window accepted steps (a limiter or a floor
+    // switching between states keeps it hovering; more steps would not help)
+    auto stalled = [&] {
+      const auto &h = report.history;
+      return h.size() > stall_window && h.back() > 0.5 * h[h.size() - 1 - stall_window];
+    };
+    while (norm > settings.tolerance && report.steps < settings.max_steps && !stalled())
       {
         // chord steps: the last factorisation again while steps contract well (a Jacobian and an LU
         // cost tens to hundreds of residuals)

@@ -48,7 +48,7 @@ namespace servodrift::flow
   enum class PtcOutcome
   {
     converged,
-    stalled,   ///< the step budget ran out or the CFL fell below 1e-8 of CFL_0
+    stalled,   ///< the step budget ran out, the norm did not halve over 10 steps, or the CFL fell below 1e-8 of CFL_0
     non_finite ///< the start's residual is not finite
   };
 
