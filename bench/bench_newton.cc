@@ -69,6 +69,8 @@ int main(int argc, char **argv)
               r.factorisation_seconds, solver.flow_rate("outlet"));
   for (double h : r.history)
     std::printf(" %.1e", h);
+  if (r.limiter_held)
+    std::printf(" (limiter held near the solution)");
   double speed = 0, du = 0, dpmax = 0, prange = 0;
   const SimplecSolver &a = simplec.solver();
   for (std::size_t k = 0; k < newton.n_cells(); ++k)

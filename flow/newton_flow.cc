@@ -67,6 +67,10 @@ namespace servodrift::flow
     unsigned int n_colours = 0;
     // the scales of the last residual at the unperturbed state
     double momentum_scale = 1, throughput = 1, pressure_scale = 1;
+
+  public:
+    double limiter_hold_residual = 0; ///< see SimplecSolver::solve_newton
+    bool limiter_held = false;        ///< from near the solution on (jacobian)
   };
 
   SimplecSolver::NewtonProblem::NewtonProblem(SimplecSolver::Implementation &d_)
@@ -259,6 +263,17 @@ namespace servodrift::flow
   void SimplecSolver::NewtonProblem::jacobian(const Eigen::VectorXd &x, const Eigen::VectorXd &R,
                                               Eigen::SparseMatrix<double> &J)
   {
+    // Near the solution the convection limiter is held at its values of x (as SIMPLEC's iteration
+    // control does where it hovers, and SU2's and FUN3D's frozen limiters): Barth-Jespersen's min is
+    // not differentiable, and Newton hovers where it switches between faces. Held at x, the residual
+    // at x is the same; the last assembly may have been a rejected trial's, hence x's first.
+    if (!limiter_held && norm(R) < limiter_hold_residual)
+      {
+        Eigen::VectorXd at_x;
+        residual(x, at_x);
+        d.momentum.hold_limiters(true);
+        limiter_held = true;
+      }
     // typical sizes per block: a step relative to the block's largest value where
     // x_j is small
     const double speed = std::max(x.segment(0, 2 * n).lpNorm<Eigen::Infinity>(), 1e-12);
@@ -306,18 +321,21 @@ namespace servodrift::flow
     residual(x, restore); // the solver's state (and the scales) back at x
   }
 
-  PtcReport SimplecSolver::solve_newton(const PtcSettings &settings)
+  PtcReport SimplecSolver::solve_newton(const PtcSettings &settings, double limiter_hold_residual)
   {
     auto &d = *impl;
     if (d.turbulence->turbulent() || d.cavitation.enabled())
       throw std::invalid_argument("flow: Newton-PTC is laminar and single phase for now");
     d.forget_time_levels();
     NewtonProblem problem(d);
+    problem.limiter_hold_residual = limiter_hold_residual;
     Eigen::VectorXd x;
     problem.pack(x);
     PtcReport report = solve_ptc(problem, x, settings);
     Eigen::VectorXd R;
     problem.residual(x, R); // the state, its boundary values and gradients at the final x
+    report.limiter_held = problem.limiter_held;
+    d.momentum.hold_limiters(false);
     report.colours = problem.colours();
     return report;
   }

@@ -57,6 +57,7 @@ namespace servodrift::flow
     PtcOutcome outcome = PtcOutcome::stalled;
     unsigned int steps = 0, residual_evaluations = 0, jacobians = 0;
     unsigned int chord_steps = 0; ///< steps with an earlier Jacobian's LU
+    bool limiter_held = false;    ///< the problem held a non-differentiable part near the solution
     unsigned int colours = 0;
     std::size_t jacobian_entries = 0; ///< non-zeros of the last Jacobian
     std::size_t unknowns = 0;         ///< residual evaluations per Jacobian (a coloured

@@ -117,8 +117,12 @@ namespace servodrift::flow
     /// Newton-PTC (newton_flow.cc): the same steady discrete equations as solve() (momentum,
     /// continuity, Rhie-Chow's face fluxes, the extrapolated wall pressures) as one system, from the
     /// current fields, to `settings.tolerance' of the scaled residual. Laminar and single phase
-    /// (std::invalid_argument otherwise). The fields are left at the last accepted state.
-    PtcReport solve_newton(const PtcSettings &settings);
+    /// (std::invalid_argument otherwise). The fields are left at the last accepted state. Below a
+    /// scaled residual of `limiter_hold_residual' the convection limiter is held at its values of that
+    /// state (a frozen limiter: differentiable, so Newton converges where Barth-Jespersen's switching
+    /// would hold it near 1e-7-1e-6; the answer is then the held limiter's, within about 1e-6 of the
+    /// flow rate); 0: never held (exactly SIMPLEC's discrete equations).
+    PtcReport solve_newton(const PtcSettings &settings, double limiter_hold_residual = 1e-5);
 
     /// Time stepping, laminar (time_stepping.cc): one step of dt [s] from the current fields, second-
     /// order backward differences (BDF2) after a first implicit Euler step at the same dt (any other
