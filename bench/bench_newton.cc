@@ -2,7 +2,8 @@
 // orifice case of RV-1 is solved by SIMPLEC at a neighbouring pressure difference (the continuation
 // neighbour: dp / ratio), then at dp both by SIMPLEC (the flow stage's path) and by Newton-PTC from
 // that neighbour, and the two answers and costs are printed: steps, Jacobians, colours, the seconds
-// of residuals, Jacobians and factorisations, the flow rate and the largest field differences.
+// of residuals, Jacobians and factorisations, the flow rate and the largest field differences. Last,
+// Newton-PTC from rest (fields zero, dp applied at once) at three first CFL numbers.
 //   OMP_THREAD_LIMIT=1 build/bench/bench_newton [nozzle|orifice] [temperature degC] [dp Pa] [ratio] [CFL_0]
 #include "common/valve_description.h"
 #include "flow/pilot_field.h"
@@ -84,4 +85,19 @@ int main(int argc, char **argv)
   std::printf(
       "\n  Newton against SIMPLEC: velocity %.2e of the largest, pressure %.2e of the largest, Q %.2e relative\n",
       du / speed, dpmax / prange, solver.flow_rate("outlet") / a.flow_rate("outlet") - 1);
+
+  // from rest: the fields zero, the pressure difference applied at once (PTC's time-like path)
+  for (const double cfl : {1e-2, 1.0, 100.0})
+    {
+      PilotField rest(valve, geometry, c, gap);
+      rest.solver().set_boundary_pressure("inlet", dp);
+      PtcSettings s = settings;
+      s.initial_cfl = cfl;
+      t0 = std::chrono::steady_clock::now();
+      const PtcReport q = rest.solver().solve_newton(s);
+      std::printf("Newton-PTC from rest (CFL_0 %g): %s, %u steps, %u Jacobians, %.2f s, norm %.1e, Q %.2e relative to "
+                  "SIMPLEC's\n",
+                  cfl, to_string(q.outcome).c_str(), q.steps, q.jacobians, seconds_since(t0), q.norm,
+                  rest.solver().flow_rate("outlet") / a.flow_rate("outlet") - 1);
+    }
 }

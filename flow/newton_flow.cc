@@ -38,6 +38,8 @@ namespace servodrift::flow
     /// the finite-difference step relative to an unknown's size (about sqrt of
     /// double's epsilon, a little larger for residuals that sum many terms)
     constexpr double relative_step = 1e-7;
+    /// the floor of a block's typical size and of the norm's scales, relative to the driven flow's
+    constexpr double scale_floor = 1e-3;
   } // namespace
 
   // a nested class of SimplecSolver: it works on the solver's units
@@ -67,6 +69,9 @@ namespace servodrift::flow
     unsigned int n_colours = 0;
     // the scales of the last residual at the unperturbed state
     double momentum_scale = 1, throughput = 1, pressure_scale = 1;
+    /// the driven flow's scales (constructor): the floors of the steps and of the norm's scales, so
+    /// that a field at rest has both
+    double reference_pressure = 0, reference_speed = 0, reference_flux = 0;
 
   public:
     double limiter_hold_residual = 0; ///< see SimplecSolver::solve_newton
@@ -79,10 +84,19 @@ namespace servodrift::flow
     , n(mesh.n_cells())
     , nf(mesh.n_faces())
   {
+    // the scales of the flow that the boundaries drive (what a field at rest has none of): the
+    // largest boundary pressure, its Bernoulli speed or the largest given velocity, and their flux
+    double largest_area = 0;
     mesh.for_each_boundary_face([&](std::size_t f, unsigned int) {
       if (!d.boundaries.is_pressure_boundary(f))
-        extrapolated_face.push_back(f);
+        extrapolated_face.push_back(f), reference_speed = std::max(reference_speed, d.boundaries.prescribed_velocity(f).norm());
+      else
+        reference_pressure = std::max(reference_pressure, std::abs(d.boundaries.of_face(f).pressure));
+      largest_area = std::max(largest_area, mesh.face_area[f]);
     });
+    reference_speed = std::max(reference_speed, std::sqrt(2 * reference_pressure / d.fluid.density));
+    reference_pressure = std::max(reference_pressure, 0.5 * d.fluid.density * reference_speed * reference_speed);
+    reference_flux = d.fluid.density * reference_speed * largest_area;
     pressure_offset = 2 * n, flux_offset = 3 * n, wall_offset = 3 * n + nf;
     n_unknowns = wall_offset + extrapolated_face.size();
     colour();
@@ -207,7 +221,11 @@ namespace servodrift::flow
             s.p_b[f] - std::max(s.p[P] + s.grad_p[P].dot(mesh.face_center[f] - mesh.cell_center[P]), floor);
       }
     const MomentumEquation::Residuals m = d.momentum.assemble(s, d.boundaries, *d.turbulence, s.flux);
-    momentum_scale = std::max(m.scale, vanishing);
+    // at least a thousandth of the driven flow's sum a_P |u| (a field at rest has none)
+    double diagonal_sum = 0;
+    for (double a : d.momentum.component(0).diagonal)
+      diagonal_sum += a;
+    momentum_scale = std::max({m.scale, scale_floor * reference_speed * diagonal_sum, vanishing});
     for (int i = 0; i < 2; ++i)
       {
         const FvMatrix &eq = d.momentum.component(i);
@@ -228,7 +246,8 @@ namespace servodrift::flow
       }
     if (!d.boundaries.has_pressure_boundary())
       R[pressure_offset] = s.p[0]; // p defined up to a constant: pinned in the first cell
-    throughput = std::max(continuity_reference(mesh, s.flux, d.boundaries.velocity_inlet_inflow()), vanishing);
+    throughput = std::max({continuity_reference(mesh, s.flux, d.boundaries.velocity_inlet_inflow()),
+                           scale_floor * reference_flux, vanishing});
     double largest_p = vanishing;
     for (double p : s.p)
       largest_p = std::max(largest_p, std::abs(p));
@@ -276,9 +295,9 @@ namespace servodrift::flow
       }
     // typical sizes per block: a step relative to the block's largest value where
     // x_j is small
-    const double speed = std::max(x.segment(0, 2 * n).lpNorm<Eigen::Infinity>(), 1e-12);
-    const double pressure = std::max(x.segment(pressure_offset, n).lpNorm<Eigen::Infinity>(), 1e-6);
-    const double flux = std::max(x.segment(flux_offset, nf).lpNorm<Eigen::Infinity>(), 1e-300);
+    const double speed = std::max(x.segment(0, 2 * n).lpNorm<Eigen::Infinity>(), scale_floor * reference_speed);
+    const double pressure = std::max(x.segment(pressure_offset, n).lpNorm<Eigen::Infinity>(), scale_floor * reference_pressure);
+    const double flux = std::max(x.segment(flux_offset, nf).lpNorm<Eigen::Infinity>(), scale_floor * reference_flux);
     auto typical = [&](std::size_t j) {
       return j < pressure_offset ? speed : j < flux_offset ? pressure : j < wall_offset ? flux : pressure;
     };
