@@ -148,12 +148,10 @@ namespace servodrift
                       "transition Reynolds number allows it. Each costs a flow stage. Empty: none. [-]");
     prm.declare_entry("Bore sensitivity", "auto", Patterns::Selection("auto|on|off"),
                       "Whether the flow stage also tabulates the pilot flows at bores one `Bore "
-                      "sensitivity step' wider (tables/fixed_orifice_bore.csv, nozzle_flapper_bore.csv: "
-                      "a few points per temperature), from which the system model carries a side built "
-                      "to another bore (Asymmetry, Tolerances). Without them it uses the closed forms' "
-                      "ratio E21/E22, exact at the reduced-order level but not at the field level "
-                      "(doc/method.md \"Asymmetric valve\"). auto: at the field level when `Tolerances' "
-                      "is enabled with a bore toleranced or `Asymmetry' sets a bore deviation. [-]");
+                      "sensitivity step' wider (tables/*_bore.csv), for a side built to another bore "
+                      "(Asymmetry, Tolerances); without them, the closed forms' ratio E21/E22 "
+                      "(doc/method.md \"Asymmetric valve\"). auto: at the field level when a bore is "
+                      "toleranced or deviates. [-]");
     prm.declare_entry("Bore sensitivity step", "4e-6", Patterns::Double(1e-7, 5e-5),
                       "Diameter step of the bore-sensitivity tables, the same for the fixed orifice and "
                       "the nozzle: large enough that the field level's discretisation noise between two "
