@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "common/parameter_input.h"
+#include "common/parameters/parameter_helpers.h"
 #include "common/provenance.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -43,26 +44,6 @@ namespace servodrift
       ToleranceParameters::declare_parameters(prm);
       FitParameters::declare_parameters(prm);
       OutputParameters::declare_parameters(prm);
-    }
-
-    void parse_all(ParameterHandler &prm, ValveDescription &v)
-    {
-      v.operating.parse_parameters(prm);
-      v.torque_motor.parse_parameters(prm);
-      v.expansion.parse_parameters(prm);
-      v.spring_tube.parse_parameters(prm);
-      v.armature.parse_parameters(prm);
-      v.pilot.parse_parameters(prm);
-      v.spool.parse_parameters(prm);
-      v.fluid.parse_parameters(prm);
-      v.flow_solver.parse_parameters(prm);
-      v.offsets.parse_parameters(prm);
-      v.asymmetry.parse_parameters(prm);
-      v.sweeps.parse_parameters(prm);
-      v.dynamics.parse_parameters(prm);
-      v.tolerances.parse_parameters(prm);
-      v.fits.parse_parameters(prm);
-      v.output.parse_parameters(prm);
     }
 
     void fill(ParameterHandler &prm, const std::string &input_file, const std::vector<std::string> &overrides)
@@ -127,7 +108,8 @@ namespace servodrift
     ParameterHandler prm;
     fill(prm, input_file, overrides);
     ValveDescription v;
-    parse_all(prm, v);
+    parameters::HandlerSource values(prm);
+    parse_valve_description(values, v);
     v.source = input_file.empty() ? "built-in RV-1" : input_file;
     std::ostringstream s;
     prm.print_parameters(s, style(ParameterHandler::PRM));
@@ -171,7 +153,8 @@ namespace servodrift
           prm->leave_subsection();
       }
     ValveDescription v;
-    parse_all(*prm, v);
+    parameters::HandlerSource values(*prm);
+    parse_valve_description(values, v);
     v.source = source;
     validate(v);
     return v;

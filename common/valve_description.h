@@ -59,6 +59,14 @@ namespace servodrift
     markdown, ///< the parameter reference of doc/parameters.md
   };
 
+  /// Every subsection's values from `source' (the structs' parse_parameters, in declaration order).
+  void parse_valve_description(ParameterSource &source, ValveDescription &valve);
+  /// A complete parameter file as servodrift printed it (parameters.prm of an output directory or
+  /// of an FMU's resources), read without deal.II: every entry must be present; the ranges are
+  /// not checked again (deal.II checked them when it wrote the file). `parameters_sha256' stays
+  /// empty. Throws InputError naming the file and the entry.
+  ValveDescription read_printed_valve_description(const std::string &path);
+
   /// Defaults (RV-1), then the input file if any (.prm or .json), then each override
   /// "Subsection/Key=value" in order; then validate(). Throws InputError with a one-line message
   /// naming the file or override, the entry and the allowed range.

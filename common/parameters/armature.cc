@@ -30,16 +30,4 @@ namespace servodrift
                       "only while in contact and never pulling (dynamics). [1]");
     prm.leave_subsection();
   }
-
-  void ArmatureParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection(subsection);
-    pivot_to_nozzle_distance = prm.get_double("Pivot to nozzle distance");
-    inertia = prm.get_double("Inertia");
-    damping = prm.get_double("Damping");
-    flapper_width = prm.get_double("Flapper width");
-    nozzle_contact_stiffness = prm.get_double("Nozzle contact stiffness");
-    nozzle_contact_damping_ratio = prm.get_double("Nozzle contact damping ratio");
-    prm.leave_subsection();
-  }
 } // namespace servodrift

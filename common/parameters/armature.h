@@ -1,5 +1,6 @@
 #pragma once
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -15,6 +16,6 @@ namespace servodrift
     double nozzle_contact_damping_ratio; ///< zeta_c of the contact, c_c = 2 zeta_c sqrt(K_c J_a/r^2) [1]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

@@ -6,11 +6,6 @@ namespace servodrift
 {
   using namespace parameters;
 
-  namespace
-  {
-    const char *side_name(bool left) { return left ? "Left" : "Right"; }
-  } // namespace
-
   void AsymmetryParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection(subsection);
@@ -45,25 +40,6 @@ namespace servodrift
                       "parallel, so K_m and K_t follow the mean of the two. [1]");
     prm.declare_entry("Right magnet remanence deviation", "0", Patterns::Double(-0.2, 0.2),
                       "(B_r - nominal B_r)/nominal B_r of the right magnet (E8). [1]");
-    prm.leave_subsection();
-  }
-
-  void AsymmetryParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection(subsection);
-    for (const bool left : {true, false})
-      {
-        const std::string side = side_name(left);
-        SideDeviations &d = left ? this->left : right;
-        d.orifice_diameter = prm.get_double(side + " orifice diameter deviation");
-        d.nozzle_diameter = prm.get_double(side + " nozzle diameter deviation");
-        d.null_gap = prm.get_double(side + " null gap deviation");
-        d.orifice_discharge_factor = prm.get_double(side + " orifice discharge factor");
-        d.nozzle_discharge_factor = prm.get_double(side + " nozzle discharge factor");
-      }
-    lower_gap_mismatch = prm.get_double("Lower gap mismatch");
-    left_remanence = prm.get_double("Left magnet remanence deviation");
-    right_remanence = prm.get_double("Right magnet remanence deviation");
     prm.leave_subsection();
   }
 } // namespace servodrift

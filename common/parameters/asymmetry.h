@@ -1,5 +1,6 @@
 #pragma once
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -23,8 +24,10 @@ namespace servodrift
     double lower_gap_mismatch; ///< torque motor: g_1 - g_2 at theta = 0 [m]
     double left_remanence;     ///< (B_r,left magnet - B_r)/B_r [1]
     double right_remanence;    ///< (B_r,right magnet - B_r)/B_r [1]
+    /// The first word of a side's entries
+    static const char *side_name(bool left) { return left ? "Left" : "Right"; }
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

@@ -89,33 +89,4 @@ namespace servodrift
                       "strictly increasing. [s]");
     prm.leave_subsection();
   }
-
-  void DynamicsParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection(subsection);
-    enabled = prm.get_bool("Enabled");
-    bias = prm.get_double("Bias");
-    small_step = prm.get_double("Small step");
-    step_duration = prm.get_double("Step duration");
-    minimum_frequency = prm.get_double("Minimum frequency");
-    maximum_frequency = prm.get_double("Maximum frequency");
-    frequency_points = prm.get_integer("Frequency points");
-    sine_frequencies = get_double_list(prm, "Sine frequencies");
-    sine_check_amplitude = prm.get_double("Sine check amplitude");
-    linearity_margin = prm.get_double("Linearity margin");
-    sine_amplitudes = get_double_list(prm, "Sine amplitudes");
-    large_signal_temperatures = static_cast<unsigned int>(prm.get_integer("Large-signal temperatures"));
-    samples_per_period = prm.get_integer("Samples per period");
-    maximum_periods = prm.get_integer("Maximum periods");
-    periodic_tolerance = prm.get_double("Periodic tolerance");
-    relative_tolerance = prm.get_double("Relative tolerance");
-    absolute_tolerance = prm.get_double("Absolute tolerance");
-    maximum_steps = prm.get_integer("Maximum steps");
-    fixed_time_study = prm.get_bool("Fixed-time study");
-    reading_times = get_double_list(prm, "Reading times");
-    fixed_time_deviation_angles = get_double_list(prm, "Fixed-time deviation angles");
-    for (double &a : fixed_time_deviation_angles)
-      a *= 3.14159265358979323846 / 180;
-    prm.leave_subsection();
-  }
 } // namespace servodrift

@@ -1,6 +1,7 @@
 #pragma once
 #include <vector>
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -32,6 +33,6 @@ namespace servodrift
     std::vector<double> fixed_time_deviation_angles; ///< theta_d of the fixed-time study [rad] (declared in degree)
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

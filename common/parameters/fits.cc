@@ -24,14 +24,4 @@ namespace servodrift
                       "flapper force. [1]");
     prm.leave_subsection();
   }
-
-  void FitParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection(subsection);
-    torque_motor_degrees = get_integer_list(prm, "Torque motor degrees");
-    spring_tube_degrees = get_integer_list(prm, "Spring tube degrees");
-    fixed_orifice_degrees = get_integer_list(prm, "Fixed orifice degrees");
-    nozzle_flapper_degrees = get_integer_list(prm, "Nozzle flapper degrees");
-    prm.leave_subsection();
-  }
 } // namespace servodrift

@@ -1,6 +1,7 @@
 #pragma once
 #include <vector>
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -15,6 +16,6 @@ namespace servodrift
     std::vector<int> nozzle_flapper_degrees; ///< temperature, gap, pressure difference
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

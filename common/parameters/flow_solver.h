@@ -1,6 +1,7 @@
 #pragma once
 #include <string>
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -35,6 +36,6 @@ namespace servodrift
     double acceleration_start;        ///< Anderson acceleration: from this largest scaled residual down [1]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

@@ -1,5 +1,6 @@
 #pragma once
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -24,6 +25,6 @@ namespace servodrift
     double air_release_pressure; ///< absolute [Pa]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

@@ -1,7 +1,6 @@
 #include "common/parameters/offsets.h"
 
 #include "common/parameters/parameter_helpers.h"
-#include "common/units.h"
 
 namespace servodrift
 {
@@ -29,20 +28,6 @@ namespace servodrift
                       "its hydraulic null x_n and measures deviations from the same valve at T0; "
                       "as-assembled keeps the offsets and measures deviations from theta_d = 0 at the "
                       "same temperature (the paper's). [-]");
-    prm.leave_subsection();
-  }
-
-  void OffsetParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection(subsection);
-    spring_tube_rest_angle = prm.get_double("Spring tube rest angle") * units::degree;
-    magnetic_null = prm.get_double("Magnetic null") * units::degree;
-    hydraulic_null = prm.get_double("Hydraulic null");
-    const std::string target = prm.get("Deviation target");
-    deviation_target = target == "magnetic-null"          ? Target::magnetic_null :
-                       target == "spring-tube-rest-angle" ? Target::spring_tube_rest_angle :
-                                                            Target::hydraulic_null;
-    nulling = prm.get("Nulling") == "as-assembled" ? Nulling::as_assembled : Nulling::nulled_at_reference;
     prm.leave_subsection();
   }
 } // namespace servodrift

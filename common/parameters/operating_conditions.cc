@@ -27,15 +27,4 @@ namespace servodrift
                       "vapour pressure (C12). [Pa]");
     prm.leave_subsection();
   }
-
-  void OperatingConditions::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection(subsection);
-    supply_pressure = prm.get_double("Supply pressure");
-    ambient_pressure = prm.get_double("Ambient pressure");
-    return_pressure = prm.get_double("Return pressure");
-    reference_temperature = prm.get_double("Reference temperature");
-    rated_current = prm.get_double("Rated current");
-    prm.leave_subsection();
-  }
 } // namespace servodrift

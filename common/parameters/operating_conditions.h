@@ -1,5 +1,6 @@
 #pragma once
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -14,6 +15,6 @@ namespace servodrift
     double ambient_pressure;      ///< absolute pressure of gauge zero, for cavitation checks [Pa]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -23,8 +24,9 @@ namespace servodrift
     /// Field-level flow cases written as VTU under flow/: those at the reference temperature, all, none
     enum class FlowFields { reference, all, none };
     FlowFields flow_fields;
+    bool fmu;                         ///< `servodrift run' also exports the valve as an FMU
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -64,6 +65,6 @@ namespace servodrift
     FlapperForceLaw flapper_force_law;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

@@ -1,6 +1,7 @@
 #pragma once
 #include <string>
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -30,6 +31,6 @@ namespace servodrift
     double field_mesh_resolution;      ///< scales every element count [1]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

@@ -1,7 +1,6 @@
 #include "common/parameters/sweeps.h"
 
 #include "common/parameters/parameter_helpers.h"
-#include "common/units.h"
 
 namespace servodrift
 {
@@ -65,26 +64,6 @@ namespace servodrift
                       double_list(-10, 10, 1),
                       "Assembly deviation angles theta_d of the drift map (D8), strictly increasing. "
                       "[deg]");
-    prm.leave_subsection();
-  }
-
-  void SweepParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection(subsection);
-    table_temperatures = get_double_list(prm, "Table temperatures");
-    motor_angles = get_double_list(prm, "Motor angles");
-    for (double &a : motor_angles)
-      a *= units::degree;
-    motor_currents = get_double_list(prm, "Motor currents");
-    pressure_fractions = get_double_list(prm, "Pressure fractions");
-    gap_fractions = get_double_list(prm, "Gap fractions");
-    field_orifice_pressure_fractions = get_double_list(prm, "Field orifice pressure fractions");
-    field_gap_fractions = get_double_list(prm, "Field gap fractions");
-    field_nozzle_pressure_fractions = get_double_list(prm, "Field nozzle pressure fractions");
-    drift_temperatures = get_double_list(prm, "Drift temperatures");
-    deviation_angles = get_double_list(prm, "Deviation angles");
-    for (double &a : deviation_angles)
-      a *= units::degree;
     prm.leave_subsection();
   }
 } // namespace servodrift

@@ -1,6 +1,7 @@
 #pragma once
 #include <vector>
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -21,6 +22,6 @@ namespace servodrift
     std::vector<double> deviation_angles;     ///< deviation angles theta_d of the drift map [rad]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

@@ -32,18 +32,4 @@ namespace servodrift
                       "Expansion coefficient of spool and sleeve, 440C / 9Cr18 (2.3). [1/degC]");
     prm.leave_subsection();
   }
-
-  void ThermalExpansion::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection(subsection);
-    spring_tube = prm.get_double("Spring tube");
-    armature = prm.get_double("Armature");
-    pole_pieces = prm.get_double("Pole pieces");
-    magnet = prm.get_double("Magnet");
-    body = prm.get_double("Body");
-    nozzle = prm.get_double("Nozzle");
-    flapper = prm.get_double("Flapper");
-    spool = prm.get_double("Spool");
-    prm.leave_subsection();
-  }
 } // namespace servodrift

@@ -1,5 +1,6 @@
 #pragma once
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -17,6 +18,6 @@ namespace servodrift
     double spool;        ///< spool and sleeve [1/degC]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

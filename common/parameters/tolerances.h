@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -47,6 +48,6 @@ namespace servodrift
     std::vector<std::size_t> active() const;
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
   };
 } // namespace servodrift

@@ -1,6 +1,7 @@
 #pragma once
 #include <string>
 namespace dealii { class ParameterHandler; }
+namespace servodrift { class ParameterSource; }
 
 namespace servodrift
 {
@@ -62,7 +63,7 @@ namespace servodrift
     bool voltage_drive;             ///< the amplifier imposes the coil voltage (coil state i) [-]
 
     static void declare_parameters(dealii::ParameterHandler &prm);
-    void parse_parameters(dealii::ParameterHandler &prm);
+    void parse_parameters(ParameterSource &prm);
 
     /// Net control MMF per ampere of differential current: N_c (push-pull) or 2 N_c (series) [1].
     double effective_turns() const { return series_aiding ? 2.0 * turns_per_coil : 1.0 * turns_per_coil; }

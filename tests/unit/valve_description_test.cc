@@ -182,3 +182,57 @@ TEST(ValveDescription, PrintedParameterFileReadsBack)
     }
   EXPECT_GT(rows, 100u);
 }
+
+TEST(ValveDescription, PrintedFileReadWithoutDealii)
+{
+  // A valve off the defaults in every kind of entry (number, integer, list, selection, boolean,
+  // angle in degrees, subsection of a subsection): deal.II's print read by the lean reader (what the
+  // FMU does with resources/parameters.prm) gives the values deal.II's reader gives.
+  const std::vector<std::string> set = {"Operating conditions/Supply pressure=18e6", "Spool/Overlap=12e-6",
+                                        "Fluid/Vogel B=600.25", "Offsets/Magnetic null=0.0125",
+                                        "Asymmetry/Left null gap deviation=1.5e-6",
+                                        "Sweeps/Drift temperatures=45, 60, 115", "Fits/Torque motor degrees=2, 3, 1",
+                                        "Pilot stage/Model level=field", "Output/Plots=false",
+                                        "Tolerances/Left orifice diameter/Standard deviation=2e-6"};
+  const ValveDescription expected = load_valve_description("", set);
+  const std::string path = write("printed.prm", print_parameters("", set, ParameterFormat::prm));
+  const ValveDescription read = read_printed_valve_description(path);
+  EXPECT_EQ(read.operating.supply_pressure, expected.operating.supply_pressure);
+  EXPECT_EQ(read.spool.overlap, expected.spool.overlap);
+  EXPECT_EQ(read.fluid.vogel_b, expected.fluid.vogel_b);
+  EXPECT_EQ(read.offsets.magnetic_null, expected.offsets.magnetic_null);
+  EXPECT_EQ(read.asymmetry.left.null_gap, expected.asymmetry.left.null_gap);
+  EXPECT_EQ(read.sweeps.drift_temperatures, expected.sweeps.drift_temperatures);
+  EXPECT_EQ(read.fits.torque_motor_degrees, expected.fits.torque_motor_degrees);
+  EXPECT_EQ(read.pilot.model_level, expected.pilot.model_level);
+  EXPECT_EQ(read.output.plots, expected.output.plots);
+  ASSERT_EQ(read.tolerances.distributions.size(), expected.tolerances.distributions.size());
+  for (std::size_t k = 0; k < read.tolerances.distributions.size(); ++k)
+    EXPECT_EQ(read.tolerances.distributions[k].standard_deviation,
+              expected.tolerances.distributions[k].standard_deviation);
+  EXPECT_EQ(read.parameter_file, print_parameters("", set, ParameterFormat::prm));
+}
+
+TEST(ValveDescription, LeanReaderRefusesBrokenFiles)
+{
+  const std::string text = print_parameters("", {}, ParameterFormat::prm);
+  // an entry removed, a number spoiled, an unbalanced subsection, a stray line: one line naming
+  // the file and the entry
+  std::string no_entry = text;
+  const auto at = no_entry.find("set Overlap");
+  no_entry.erase(at, no_entry.find('\n', at) - at);
+  EXPECT_NE(refusal([&] { read_printed_valve_description(write("gone.prm", no_entry)); }).find("Spool/Overlap' is missing"),
+            std::string::npos);
+  std::string spoiled = text;
+  const auto value = spoiled.find("= ", spoiled.find("set Overlap")) + 2;
+  spoiled.insert(value, "x");
+  const std::string m = refusal([&] { read_printed_valve_description(write("bad.prm", spoiled)); });
+  EXPECT_NE(m.find("bad.prm: entry `Spool/Overlap'"), std::string::npos) << m;
+  EXPECT_NE(m.find("not a finite number"), std::string::npos) << m;
+  EXPECT_NE(refusal([&] { read_printed_valve_description(write("open.prm", "subsection Spool\n")); }).find("no `end'"),
+            std::string::npos);
+  EXPECT_NE(refusal([&] { read_printed_valve_description(write("stray.prm", "hello\n")); }).find("stray.prm:1:"),
+            std::string::npos);
+  EXPECT_NE(refusal([&] { read_printed_valve_description("/nonexistent/parameters.prm"); }).find("cannot be read"),
+            std::string::npos);
+}
