@@ -7,6 +7,7 @@
 #include "common/valve_description.h"
 #include "common/version.h"
 #include "flow/pilot_stage.h"
+#include "fmu/export_fmu.h"
 #include "magnetics/torque_motor_stage.h"
 #include "structure/spring_tube_stage.h"
 #include "system/system_stage.h"
@@ -33,6 +34,7 @@ namespace
     std::string output;
     std::string format = "prm";
     bool calibrate = false, convergence = false;
+    bool reduced_order = false;      ///< export-fmu: the reduced-order tables, made first
     std::string measured;            ///< calibrate: the measured data
     std::vector<std::string> free;   ///< calibrate: "Subsection/Key[=lower:upper]"
   };
@@ -189,7 +191,12 @@ namespace
       ->expected(1)
       ->allow_extra_args(false)
       ->take_all();
-    for (auto *c : {run, magnetics, structure, flow, system, dynamics, tolerances, calibrate})
+    auto *export_fmu = app.add_subcommand(
+      "export-fmu", "the valve of the tables in <output>/tables as an FMI 2.0 FMU (Model Exchange and "
+                    "Co-Simulation): <output>/servodrift_valve.fmu");
+    export_fmu->add_flag("--reduced-order", o.reduced_order,
+                         "make the reduced-order tables first (seconds) instead of using those in <output>/tables");
+    for (auto *c : {run, magnetics, structure, flow, system, dynamics, tolerances, calibrate, export_fmu})
       add_common_options(c, o);
     magnetics->add_flag("--calibrate", o.calibrate,
                         "C10: calibrate the field model's equivalent magnet width at T0 against the circuit");
@@ -256,6 +263,35 @@ namespace
         });
         return 0;
       }
+    const auto write_fmu = [&](const ValveDescription &v) {
+      timed("FMU", [&] {
+        on_rank_zero([&] {
+          const fmu::ExportedFmu e = fmu::export_fmu(v);
+          say("  " + e.path + ": FMI 2.0, " + std::to_string(e.variables) + " variables, " +
+              format_cell(e.lowest_temperature) + " to " + format_cell(e.highest_temperature) + " degC");
+        });
+      });
+    };
+    if (export_fmu->parsed())
+      {
+        if (!o.reduced_order)
+          {
+            write_fmu(valve); // from the tables already there; the archive is the only file written
+            return 0;
+          }
+        Options r = o;
+        for (const char *stage : {"Torque motor", "Spring tube", "Pilot stage"})
+          r.overrides.push_back(std::string(stage) + "/Model level=reduced-order");
+        const ValveDescription reduced = load(r);
+        transaction(reduced, [&] {
+          write_parameters_file(reduced);
+          timed("magnetics (reduced-order)", [&] { magnetics::run(reduced); });
+          timed("structure (reduced-order)", [&] { structure::run(reduced); });
+          timed("flow (reduced-order)", [&] { flow::run(reduced); });
+          write_fmu(reduced);
+        });
+        return 0;
+      }
     transaction(valve, [&] {
       if (system->parsed() || dynamics->parsed() || tolerances->parsed())
         {
@@ -274,6 +310,8 @@ namespace
           timed("flow (" + valve.pilot.model_level + ")", [&] { flow::run(valve); });
           const system::Analyses analyses{valve.dynamics.enabled, valve.tolerances.enabled};
           timed(system_label(analyses), [&] { system::run(valve, analyses); });
+          if (valve.output.fmu)
+            write_fmu(valve);
           say("results: " + valve.output.directory + "/report.md, " + valve.output.directory + "/tables/, " +
               valve.output.directory + "/system/");
         }

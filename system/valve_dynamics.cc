@@ -89,6 +89,8 @@ namespace servodrift::system
       ydot[2] = ydot[3] = 0;
     if (held.spool)
       ydot[4] = ydot[5] = 0;
+    if (held.brake_volume)
+      ydot[6] = 0;
   }
 
   void ValveDynamics::linearise(const std::vector<double> &y, double command, Eigen::MatrixXd &A,

@@ -23,6 +23,7 @@ namespace servodrift::system
     bool flapper = false;           ///< theta, dtheta/dt
     bool control_pressures = false; ///< p_L, p_R
     bool spool = false;             ///< x_v, dx_v/dt
+    bool brake_volume = false;      ///< p_B: an external brake port holds it at the port's pressure (FMU)
   };
 
   /// The groups of states after which a mode is named.

@@ -166,7 +166,10 @@ namespace servodrift
       throw InputError(name + ": subsection `" + joined(open, "") + "' has no `end'");
   }
 
-  void PrmText::enter_subsection(const std::string &subsection) { current.push_back(subsection); }
+  void PrmText::enter_subsection(const std::string &subsection)
+  {
+    current.push_back(subsection);
+  }
 
   void PrmText::leave_subsection()
   {
@@ -182,5 +185,8 @@ namespace servodrift
     return it->second;
   }
 
-  std::string PrmText::path_of(const std::string &key) const { return joined(current, key); }
+  std::string PrmText::path_of(const std::string &key) const
+  {
+    return joined(current, key);
+  }
 } // namespace servodrift
