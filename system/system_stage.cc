@@ -5,6 +5,7 @@
 #include "common/output_files.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
+#include "common/table_formats.h"
 #include "common/units.h"
 #include "common/version.h"
 #include "system/dynamics_output.h"
@@ -172,6 +173,51 @@ namespace servodrift::system
                             to_string(p.rated_current.flapper), to_string(p.rated_current.spool.state)});
       write_file_atomically(dir + "/drift_map.csv", doc.text());
     }
+    /// The drift map on its grid (temperature fastest), in SI units; an undefined null-shift current
+    /// is 0 with `null_shift_current_defined' = 0 (no NaN in an output file)
+    GriddedData gridded_drift_map(const DriftMap &m)
+    {
+      GriddedData g;
+      g.name = "drift_map";
+      g.description = std::string("servodrift drift map (D9, E40), convention ") +
+                      (m.nulled_at_reference ? "nulled-at-reference" : "as-assembled") +
+                      "; spool at i = 0, brake pressure at the rated current";
+      g.axes = {{{"temperature", "degC"}, m.temperatures}, {{"deviation_angle", "rad"}, m.deviation_angles}};
+      const std::size_t n_T = m.temperatures.size(), n_a = m.deviation_angles.size();
+      const auto quantity = [&](const char *name, const char *unit, auto value) {
+        GriddedData::Quantity q{{name, unit}, std::vector<double>(n_T * n_a)};
+        for (std::size_t t = 0; t < n_T; ++t)
+          for (std::size_t a = 0; a < n_a; ++a)
+            q.values[t + n_T * a] = value(m.at(t, a));
+        g.quantities.push_back(q);
+      };
+      quantity("spool_displacement", "m", [](const DriftPoint &p) { return p.zero_current.spool.displacement; });
+      quantity("spool_displacement_deviation", "m", [](const DriftPoint &p) { return p.spool_displacement_deviation; });
+      quantity("brake_pressure", "Pa", [](const DriftPoint &p) { return p.rated_current.spool.brake_pressure; });
+      quantity("brake_pressure_deviation", "Pa", [](const DriftPoint &p) { return p.brake_pressure_deviation; });
+      quantity("null_pressure_shift", "Pa", [](const DriftPoint &p) { return p.null_pressure_shift; });
+      quantity("null_shift_current", "A", [](const DriftPoint &p) { return p.null_shift_current.value_or(0.0); });
+      quantity("null_shift_current_defined", "1",
+               [](const DriftPoint &p) { return p.null_shift_current ? 1.0 : 0.0; });
+      return g;
+    }
+
+    /// tables/servodrift_tables.mat and .txt, as `Output/Formats' asks: the coefficient tables and
+    /// the drift map for MATLAB/Simulink and Modelica tools
+    void write_table_formats(const ValveDescription &valve, const SystemResults &r)
+    {
+      if (!valve.output.mat_tables && !valve.output.modelica_tables)
+        return;
+      const StageTables tables = StageTables::read(tables_directory(valve), valve);
+      std::vector<GriddedData> data;
+      for (const Table *t : {&tables.torque_motor, &tables.spring_tube, &tables.fixed_orifice, &tables.nozzle_flapper})
+        data.push_back(gridded(*t));
+      data.push_back(gridded_drift_map(r.drift_map));
+      if (valve.output.mat_tables)
+        write_mat(tables_directory(valve) + "/servodrift_tables.mat", data);
+      if (valve.output.modelica_tables)
+        write_modelica(tables_directory(valve) + "/servodrift_tables.txt", data);
+    }
   } // namespace
 
   void run(const ValveDescription &valve, Analyses analyses)
@@ -187,6 +233,7 @@ namespace servodrift::system
       write_stage_coefficients(valve, results, dir);
       write_operating_points(valve, results, dir);
       write_drift_map(valve, results, dir);
+      write_table_formats(valve, results);
       if (results.dynamics)
         write_dynamics_tables(valve, *results.dynamics, dir);
       if (results.tolerances)

@@ -28,6 +28,11 @@ namespace servodrift
                       "Field-level flow cases written as VTU files (p, velocity, k, epsilon, mu_t, y+) with "
                       ".pvd collections under flow/: those at the table temperature nearest the reference "
                       "temperature (a few MB each), all, or none. [-]");
+    prm.declare_entry("Formats", "csv", Patterns::MultipleSelection("csv|mat|modelica"),
+                      "Formats of the coefficient tables and the drift map: csv (always written: the stages "
+                      "read it); mat adds tables/servodrift_tables.mat (MATLAB MAT v5, a struct per table with "
+                      "its axes and N-D arrays, for MATLAB/Simulink and scipy.io.loadmat); modelica adds "
+                      "tables/servodrift_tables.txt (Modelica text tables for CombiTable1Ds/2Ds). [-]");
     prm.declare_entry("FMU", "false", Patterns::Bool(),
                       "Whether `servodrift run' also writes servodrift_valve.fmu, the valve of its tables as "
                       "an FMI 2.0 FMU (Model Exchange and Co-Simulation), as `servodrift export-fmu' does. [-]");

@@ -25,6 +25,8 @@ namespace servodrift
     enum class FlowFields { reference, all, none };
     FlowFields flow_fields;
     bool fmu;                         ///< `servodrift run' also exports the valve as an FMU
+    bool mat_tables;                  ///< tables/servodrift_tables.mat (MATLAB MAT v5)
+    bool modelica_tables;             ///< tables/servodrift_tables.txt (Modelica text tables)
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(ParameterSource &prm);

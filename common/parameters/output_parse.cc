@@ -4,6 +4,7 @@
 #include "common/parameters/parameter_source.h"
 #include "common/units.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace servodrift
@@ -21,6 +22,9 @@ namespace servodrift
     const std::string flow = prm.get("Flow fields");
     flow_fields = flow == "all" ? FlowFields::all : flow == "none" ? FlowFields::none : FlowFields::reference;
     fmu = prm.get_bool("FMU");
+    const std::vector<std::string> formats = split_list(prm.get("Formats"));
+    mat_tables = std::find(formats.begin(), formats.end(), "mat") != formats.end();
+    modelica_tables = std::find(formats.begin(), formats.end(), "modelica") != formats.end();
     const std::string fields = trimmed(prm.get("Magnetics fields"));
     all_magnetics_fields = fields == "all";
     magnetics_field_cases.clear();
