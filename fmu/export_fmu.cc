@@ -133,7 +133,7 @@ namespace servodrift::fmu
     const system::StageFunctions f(tables);
     ExportedFmu e;
     std::tie(e.lowest_temperature, e.highest_temperature) = table_temperature_range(f);
-    const Layout l = layout(valve, e.lowest_temperature, e.highest_temperature);
+    const Layout l = layout(valve, f);
     e.variables = l.variables.size();
 
     Entries entries = {{"binaries/linux64/servodrift_valve.so", read_file(fmu_library())},

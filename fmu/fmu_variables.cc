@@ -1,5 +1,6 @@
 #include "fmu/fmu_variables.h"
 
+#include "common/output_files.h"
 #include "common/units.h"
 #include "system/valve_equations.h"
 
@@ -73,8 +74,10 @@ namespace servodrift::fmu
     return static_cast<unsigned int>(variables.size());
   }
 
-  Layout layout(const ValveDescription &valve, double lowest_temperature, double highest_temperature)
+  Layout layout(const ValveDescription &valve, const system::StageFunctions &tables)
   {
+    const auto [lowest_temperature, highest_temperature] = table_temperature_range(tables);
+    const std::vector<double> &currents = tables.torque.axis(2);
     Layout l;
     l.voltage_drive = valve.torque_motor.voltage_drive;
     l.states = l.voltage_drive ? 8 : 7;
@@ -98,76 +101,35 @@ namespace servodrift::fmu
     for (std::size_t k = 0; k < l.states; ++k)
       v.push_back({states[k].name, Role::state, k, false, states[k].unit, "", states[k].description, {}, {}, {}});
     for (std::size_t k = 0; k < l.states; ++k)
-      v.push_back({std::string("der(") + states[k].name + ")",
-                   Role::derivative,
-                   k,
-                   false,
-                   states[k].rate_unit,
-                   "",
-                   std::string("d/dt of ") + states[k].name,
-                   {},
-                   {},
-                   {}});
+      v.push_back({std::string("der(") + states[k].name + ")", Role::derivative, k, false, states[k].rate_unit, "",
+                   std::string("d/dt of ") + states[k].name, {}, {}, {}});
 
     const auto &op = valve.operating;
     const auto index = [](auto e) { return static_cast<std::size_t>(e); };
+    using Bound = std::optional<double>;
+    const auto input = [&](Input i, const char *name, const char *unit, const char *display_unit,
+                           const std::string &description, double start, Bound min, Bound max) {
+      v.push_back({name, Role::input, index(i), false, unit, display_unit, description, start, min, max});
+    };
     if (l.voltage_drive)
-      v.push_back({"coil_voltage",
-                   Role::input,
-                   index(Input::coil),
-                   false,
-                   "V",
-                   "",
-                   "voltage across the coil (the valve file says voltage drive)",
-                   0.0,
-                   {},
-                   {}});
+      input(Input::coil, "coil_voltage", "V", "", "voltage across the coil (the valve file says voltage drive)", 0.0,
+            {}, {});
     else
-      v.push_back({"coil_current",
-                   Role::input,
-                   index(Input::coil),
-                   false,
-                   "A",
-                   "",
-                   "control current through the coil; rated: " + std::to_string(op.rated_current) + " A",
-                   0.0,
-                   {},
-                   {}});
-    v.push_back({"supply_pressure",
-                 Role::input,
-                 index(Input::supply_pressure),
-                 false,
-                 "Pa",
-                 "",
-                 "supply pressure p_s, gauge; the tables were made for the described one",
-                 op.supply_pressure,
-                 0.0,
-                 {}});
-    v.push_back({"return_pressure",
-                 Role::input,
-                 index(Input::return_pressure),
-                 false,
-                 "Pa",
-                 "",
-                 "return pressure p_r, gauge",
-                 op.return_pressure,
-                 0.0,
-                 {}});
-    v.push_back({"oil_temperature", Role::input, index(Input::oil_temperature), false, "K", "degC",
-                 "oil and valve temperature, uniform (the valve at thermal equilibrium); outside [min, max] "
-                 "the FMU warns and holds the end value",
-                 units::celsius_to_kelvin + op.reference_temperature, units::celsius_to_kelvin + lowest_temperature,
-                 units::celsius_to_kelvin + highest_temperature});
-    v.push_back({"brake_port_pressure",
-                 Role::input,
-                 index(Input::brake_port_pressure),
-                 false,
-                 "Pa",
-                 "",
-                 "pressure of the brake line at the valve's port, gauge: used when external_brake_port",
-                 0.0,
-                 {},
-                 {}});
+      input(Input::coil, "coil_current", "A", "",
+            "control current through the coil (rated: " + format_cell(op.rated_current) +
+              " A); min and max: the torque table's currents",
+            0.0, currents.front(), currents.back());
+    input(Input::supply_pressure, "supply_pressure", "Pa", "",
+          "supply pressure p_s, gauge; the tables were made for the described one", op.supply_pressure, 0.0, {});
+    input(Input::return_pressure, "return_pressure", "Pa", "", "return pressure p_r, gauge", op.return_pressure, 0.0,
+          {});
+    input(Input::oil_temperature, "oil_temperature", "K", "degC",
+          "oil and valve temperature, uniform (the valve at thermal equilibrium); outside [min, max] the FMU warns "
+          "and holds the end value",
+          units::celsius_to_kelvin + op.reference_temperature, units::celsius_to_kelvin + lowest_temperature,
+          units::celsius_to_kelvin + highest_temperature);
+    input(Input::brake_port_pressure, "brake_port_pressure", "Pa", "",
+          "pressure of the brake line at the valve's port, gauge: used when external_brake_port", 0.0, {}, {});
 
     const auto output = [&](Output o, const char *name, const char *unit, const std::string &description) {
       v.push_back({name, Role::output, index(o), false, unit, "", description, {}, {}, {}});
@@ -188,30 +150,15 @@ namespace servodrift::fmu
            "1 while a pressure lies beyond the flow tables (constant C_d beyond) or the temperature is held at "
            "a table end, else 0");
 
-    v.push_back({"external_brake_port",
-                 Role::parameter,
-                 0,
-                 true,
-                 "",
-                 "",
+    v.push_back({"external_brake_port", Role::parameter, 0, true, "", "",
                  "false: the valve's own brake volume (p_B a state, as `servodrift dynamics'); true: the host "
                  "models the brake and line (brake_port_pressure an input, brake_flow the valve's output)",
-                 0.0,
-                 {},
-                 {}});
+                 0.0, {}, {}});
     ValveDescription copy = valve;
     const auto &parameters = valve_parameters();
     for (std::size_t k = 0; k < parameters.size(); ++k)
-      v.push_back({parameters[k].name,
-                   Role::parameter,
-                   k + 1,
-                   false,
-                   parameters[k].unit,
-                   "",
-                   parameters[k].description,
-                   parameters[k].entry(copy),
-                   {},
-                   {}});
+      v.push_back({parameters[k].name, Role::parameter, k + 1, false, parameters[k].unit, "", parameters[k].description,
+                   parameters[k].entry(copy), {}, {}});
     return l;
   }
 

@@ -86,8 +86,9 @@ namespace servodrift::fmu
   /// The temperatures every table covers: the highest of their lowest to the lowest of their highest [degC]
   std::pair<double, double> table_temperature_range(const system::StageFunctions &f);
 
-  /// The variables of the valve as described, with the tables' temperature range [degC].
-  Layout layout(const ValveDescription &valve, double lowest_temperature, double highest_temperature);
+  /// The variables of the valve as described over its tables: the temperature's range is the
+  /// tables' common one, the coil current's the torque table's.
+  Layout layout(const ValveDescription &valve, const system::StageFunctions &tables);
 
   /// The SI units the variables use: name and exponents (kg, m, s, A, K, rad) and degC for K.
   struct UnitDefinition

@@ -92,7 +92,7 @@ namespace servodrift::fmu
       log(true, w);
     functions = std::make_unique<system::StageFunctions>(*tables);
     std::tie(lowest_temperature, highest_temperature) = table_temperature_range(*functions);
-    layout_ = layout(valve, lowest_temperature, highest_temperature);
+    layout_ = layout(valve, *functions);
     reset();
   }
 
