@@ -11,6 +11,7 @@ a failure, printing what it measured.
   fmu_harness.py FMU RUN_DIR instances   two instances at two temperatures in one process
   fmu_harness.py FMU RUN_DIR errors      bad calls and bad resources: fmi2Error and a message, no crash
   fmu_harness.py FMU RUN_DIR resources   a table replaced in resources/ changes the model
+  fmu_harness.py FMU RUN_DIR static      both drives start at a static operating point
 """
 import ctypes
 import csv
@@ -460,12 +461,52 @@ def check_resources(fmu, run_dir):
     return 0 if ok else 1
 
 
+def check_static(fmu, run_dir):
+    """Both drives start at a static operating point: at initialisation, for inputs across the
+    torque table's currents (current drive) or up to 3 V (voltage drive, the valve of
+    RUN_DIR/voltage/servodrift_valve.fmu, 8 states), at the tables' lowest and highest temperature,
+    every derivative of Model Exchange is below 1e-9 of its state's scale per 0.1 ms (the valve's
+    fastest time constants are of that order: the tolerance of the static point's own check in
+    tests/verification/dynamics_test.cc, 1e-9 of the scale times sqrt(K_a/J_a))."""
+    failures = 0
+    root = ET.parse(os.path.join(fmu.directory, "modelDescription.xml")).getroot()
+    temperature = [v[0] for v in root.find("ModelVariables") if v.get("name") == "oil_temperature"][0]
+    for drive, path in (("current", None), ("voltage", os.path.join(run_dir, "voltage", "servodrift_valve.fmu"))):
+        f = fmu if path is None else Fmu(path)
+        try:
+            signal = "coil_current" if drive == "current" else "coil_voltage"
+            values = [-0.02, -0.005, 0.0, 0.01, 0.02] if drive == "current" else [-3.0, 0.0, 1.5, 3.0]
+            expected_states = 7 if drive == "current" else 8
+            if len(f.states) != expected_states or signal not in f.vr:
+                failures += 1
+                print(f"{drive} drive: {len(f.states)} states and no `{signal}' input: FAILED")
+                continue
+            worst = 0.0
+            for T in (float(temperature.get("min")), float(temperature.get("max"))):
+                for value in values:
+                    inst = Instance(f, ME, "static")
+                    inst.initialize(**{signal: value, "oil_temperature": T})
+                    x = inst.states()
+                    rates = inst.derivatives(0.0, x)
+                    worst = max(worst, float(np.max(np.abs(rates) * 1e-4 / inst.nominals())))
+                    inst.free()
+            ok = worst <= 1e-9
+            failures += not ok
+            print(f"{drive} drive, {len(f.states)} states: largest |rate| x 0.1 ms / scale at the start = {worst:.2e}"
+                  f" (bound 1e-9) {'ok' if ok else 'FAILED'}")
+        finally:
+            if path is not None:
+                shutil.rmtree(f.directory, ignore_errors=True)
+    return failures
+
+
 def main():
     fmu_path, run_dir, what = sys.argv[1:4]
     fmu = Fmu(fmu_path)
     try:
         failures = {"step": check_step, "ramp": check_ramp, "instances": check_instances,
-                    "errors": check_errors, "resources": check_resources}[what](fmu, run_dir)
+                    "errors": check_errors, "resources": check_resources,
+                    "static": check_static}[what](fmu, run_dir)
     finally:
         shutil.rmtree(fmu.directory, ignore_errors=True)
     print(f"{what}: {'FAILED ' + str(failures) + ' checks' if failures else 'all checks passed'}")

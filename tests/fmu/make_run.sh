@@ -2,7 +2,7 @@
 # The run the FMU checks compare with: RV-1 at the reduced order on three temperatures, exported as an
 # FMU (`servodrift export-fmu --reduced-order') and analysed by `servodrift dynamics' from the same tables,
 # both integrating with CVODE at 1e-9 relative (the step check compares the two at their tolerances);
-# the tables also as MAT and Modelica text (check_tables.py).
+# the tables also as MAT and Modelica text (check_tables.py); and the same valve under voltage drive.
 set -euo pipefail
 sd=$1 dir=$2
 rm -rf "$dir"
@@ -14,5 +14,6 @@ set_levels=(--set "Torque motor/Model level=reduced-order" --set "Spring tube/Mo
             --set "Output/Plots=false" --set "Output/Formats=csv, mat, modelica")
 "$sd" export-fmu --reduced-order -o "$dir" "${set_levels[@]}" > /dev/null
 "$sd" dynamics -o "$dir" "${set_levels[@]}" > /dev/null
+"$sd" export-fmu --reduced-order -o "$dir/voltage" "${set_levels[@]}" --set "Torque motor/Coil drive=voltage" > /dev/null
 test -s "$dir/servodrift_valve.fmu" && test -s "$dir/system/step_response.csv" && test -s "$dir/system/drift_map.csv"
 test -s "$dir/tables/servodrift_tables.mat" && test -s "$dir/tables/servodrift_tables.txt"
