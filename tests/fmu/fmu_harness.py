@@ -12,6 +12,7 @@ a failure, printing what it measured.
   fmu_harness.py FMU RUN_DIR errors      bad calls and bad resources: fmi2Error and a message, no crash
   fmu_harness.py FMU RUN_DIR resources   a table replaced in resources/ changes the model
   fmu_harness.py FMU RUN_DIR static      both drives start at a static operating point
+  fmu_harness.py FMU RUN_DIR port        the external brake port
 """
 import ctypes
 import csv
@@ -500,13 +501,50 @@ def check_static(fmu, run_dir):
     return failures
 
 
+def check_port(fmu, run_dir):
+    """The external brake port (parameter external_brake_port): with the port held at the static brake
+    pressure of the valve's own volume, the valve is static there as well and no flow crosses the
+    port (E36/E37: the blocked volume's pressure is where the metering edges' flows balance); 1 MPa
+    above it, oil flows back out of the port (brake_flow < 0), the brake pressure is the port's and its
+    state does not move. Bounds: every rate 1e-9 of its scale per 0.1 ms (as fmu.static); the flow
+    1e-9 of the supply edge's flow at null."""
+    rated = step_reference(run_dir)[min(static_reference(run_dir))]["i"][-1]
+    failures = 0
+    for current in (0.0, 0.5 * rated, rated):
+        own = Instance(fmu, ME, "own")
+        own.initialize(coil_current=current)
+        p_B, supply = own.get("brake_pressure", "supply_flow")
+        own.free()
+        port = Instance(fmu, ME, "port")
+        d = fmu.dll
+        port.check(d.fmi2EnterInitializationMode(port.c), "fmi2EnterInitializationMode")
+        port.check(d.fmi2SetBoolean(port.c, (ctypes.c_uint * 1)(fmu.vr["external_brake_port"]), 1,
+                                    (ctypes.c_int * 1)(1)), "fmi2SetBoolean")
+        port.set(coil_current=current, brake_port_pressure=p_B)
+        port.check(d.fmi2ExitInitializationMode(port.c), "fmi2ExitInitializationMode")
+        x = port.states()
+        rates = port.derivatives(0.0, x)
+        worst = float(np.max(np.abs(rates) * 1e-4 / port.nominals()))
+        flow = port.get("brake_flow")[0]
+        port.set(brake_port_pressure=p_B + 1e6)
+        rates_up = port.derivatives(0.0, x)
+        flow_up, p_out = port.get("brake_flow", "brake_pressure")
+        port.free()
+        ok = (worst <= 1e-9 and abs(flow) <= 1e-9 * max(abs(supply), 1e-12) and flow_up < 0 and
+              p_out == p_B + 1e6 and rates_up[6] == 0)
+        failures += not ok
+        print(f"i = {current:.4f} A: port at p_B = {p_B:.6e} Pa: largest rate {worst:.1e}, brake_flow {flow:.2e} m3/s;"
+              f" 1 MPa above: brake_flow {flow_up:.3e} m3/s, brake_pressure {p_out:.6e} Pa {'ok' if ok else 'FAILED'}")
+    return failures
+
+
 def main():
     fmu_path, run_dir, what = sys.argv[1:4]
     fmu = Fmu(fmu_path)
     try:
         failures = {"step": check_step, "ramp": check_ramp, "instances": check_instances,
                     "errors": check_errors, "resources": check_resources,
-                    "static": check_static}[what](fmu, run_dir)
+                    "static": check_static, "port": check_port}[what](fmu, run_dir)
     finally:
         shutil.rmtree(fmu.directory, ignore_errors=True)
     print(f"{what}: {'FAILED ' + str(failures) + ' checks' if failures else 'all checks passed'}")
