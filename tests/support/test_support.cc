@@ -5,40 +5,8 @@
 #include "magnetics/torque_motor_stage.h"
 #include "structure/spring_tube_stage.h"
 
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <stdexcept>
-
 namespace servodrift::test
 {
-  namespace
-  {
-    std::vector<std::string> &created_directories()
-    {
-      static std::vector<std::string> directories;
-      return directories;
-    }
-  } // namespace
-
-  std::string temporary_directory()
-  {
-    std::string pattern = (std::filesystem::temp_directory_path() / "servodrift-test-XXXXXX").string();
-    if (!::mkdtemp(pattern.data()))
-      throw std::runtime_error("mkdtemp failed");
-    created_directories().push_back(pattern);
-    return pattern;
-  }
-
-  void remove_temporary_directories()
-  {
-    std::error_code ignored; // a directory a test removed itself is fine
-    for (const std::string &directory : created_directories())
-      std::filesystem::remove_all(directory, ignored);
-    created_directories().clear();
-  }
-
   ValveDescription valve(std::vector<std::string> overrides)
   {
     // the reduced-order torque motor, spring tube and pilot stage unless a test asks for the field
@@ -60,17 +28,5 @@ namespace servodrift::test
     structure::run(v);
     flow::run(v);
     return tables_directory(v);
-  }
-
-  std::string number(double value)
-  {
-    char buffer[32];
-    std::snprintf(buffer, sizeof(buffer), "%.6g", value);
-    return buffer;
-  }
-
-  double relative(double a, double b)
-  {
-    return std::abs(a - b) / std::abs(b);
   }
 } // namespace servodrift::test

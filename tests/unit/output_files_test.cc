@@ -1,7 +1,7 @@
 // Outputs (issue 24): a run's files as one transaction, and no non-finite number in a result file.
 #include "common/csv.h"
 #include "common/output_files.h"
-#include "tests/support/test_support.h"
+#include "tests/support/core_support.h"
 
 #include <gtest/gtest.h>
 

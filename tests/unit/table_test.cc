@@ -2,7 +2,7 @@
 #include "common/error.h"
 #include "common/output_files.h"
 #include "common/table.h"
-#include "tests/support/test_support.h"
+#include "tests/support/core_support.h"
 
 #include <gtest/gtest.h>
 

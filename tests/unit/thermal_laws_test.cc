@@ -2,7 +2,7 @@
 // significant digits; each tolerance below is the rounding of the printed value.
 #include "common/error.h"
 #include "common/thermal_laws.h"
-#include "tests/support/test_support.h"
+#include "tests/support/core_support.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@ using test::relative;
 TEST(OilLaw, VogelViscosityMatchesModelTable)
 {
   // E16: 500 (-40), 46.6 (0), 23.5 (20), 14.0 (40), 9.36 (60), 6.78 (80), 5.20 (100), 4.17 (120) mm^2/s
-  const auto v = test::valve();
+  const auto v = test::rv1();
   const laws::Oil oil(v.fluid, 40);
   const std::pair<double, double> expected[] = {{-40, 500},  {0, 46.6},  {20, 23.5},  {40, 14.0},
                                                 {60, 9.36}, {80, 6.78}, {100, 5.20}, {120, 4.17}};
@@ -25,7 +25,7 @@ TEST(OilLaw, VogelViscosityMatchesModelTable)
 
 TEST(OilLaw, ViscosityDerivativeIsConsistent)
 {
-  const auto v = test::valve();
+  const auto v = test::rv1();
   for (const char *law : {"vogel", "paper-exponential"})
     {
       auto p = v.fluid;
@@ -40,7 +40,7 @@ TEST(OilLaw, ViscosityDerivativeIsConsistent)
 TEST(OilLaw, PaperExponentialRatio)
 {
   // E14: nu(120)/nu(40) = exp(-0.0626 * 80) = 6.68e-3 (model.md 1.7: 6.7e-3)
-  auto f = test::valve().fluid;
+  auto f = test::rv1().fluid;
   f.viscosity_law = FluidParameters::ViscosityLaw::paper_exponential;
   const laws::Oil oil(f, 40);
   EXPECT_NEAR(oil.kinematic_viscosity(40).value, 14.0e-6, 1e-15);
@@ -49,7 +49,7 @@ TEST(OilLaw, PaperExponentialRatio)
 
 TEST(OilLaw, DensityBulkModulusAndDynamicViscosity)
 {
-  const laws::Oil oil(test::valve().fluid, 40);
+  const laws::Oil oil(test::rv1().fluid, 40);
   EXPECT_DOUBLE_EQ(oil.density(40).value, 850.0);
   EXPECT_LT(relative(oil.density(120).value, 811.0), 0.001); // E15, model.md 2.8: 811 kg/m^3
   EXPECT_DOUBLE_EQ(oil.effective_bulk_modulus(40), 0.7e9);
@@ -61,7 +61,7 @@ TEST(OilLaw, DensityBulkModulusAndDynamicViscosity)
 
 TEST(OilLaw, RefusesTemperatureOutsideItsWindow)
 {
-  const laws::Oil oil(test::valve().fluid, 40);
+  const laws::Oil oil(test::rv1().fluid, 40);
   EXPECT_THROW(oil.kinematic_viscosity(151), InputError);
   EXPECT_THROW(oil.density(-56), InputError);
   EXPECT_NO_THROW(oil.kinematic_viscosity(150));
@@ -69,7 +69,7 @@ TEST(OilLaw, RefusesTemperatureOutsideItsWindow)
 
 TEST(SpringTubeLaw, YoungsModulusAndDimensions)
 {
-  const auto v = test::valve();
+  const auto v = test::rv1();
   // E12 with T_ref = 20 degC (C3)
   EXPECT_DOUBLE_EQ(laws::youngs_modulus(v.spring_tube, 20), 128e9);
   EXPECT_LT(relative(laws::youngs_modulus(v.spring_tube, 120), 128e9 * (1 - 3.5e-4 * 100)), 1e-14);
@@ -84,7 +84,7 @@ TEST(TorqueMotorLaw, AirGapsGrowAsModelSection13)
 {
   // model.md 1.3: g_12 300.0 -> 307.8 um, g_34 300.0 -> 294.5 um from 40 to 120 degC;
   // dg_12/dT = +0.098 um/degC, dg_34/dT = -0.068 um/degC (printed to 0.1 um and 0.001 um/degC)
-  const auto v = test::valve();
+  const auto v = test::rv1();
   const auto g40 = laws::torque_motor_geometry(v.torque_motor, v.expansion, 40, 40);
   const auto g120 = laws::torque_motor_geometry(v.torque_motor, v.expansion, 120, 40);
   EXPECT_NEAR(g40.lower_gap, 300.0e-6, 1e-12);
@@ -100,7 +100,7 @@ TEST(TorqueMotorLaw, AirGapsGrowAsModelSection13)
 TEST(TorqueMotorLaw, Remanence)
 {
   // E8, D4: B_r(40) = 0.90 T, alpha_Br = -2.5e-4 -> 0.882 T at 120 degC
-  const auto v = test::valve();
+  const auto v = test::rv1();
   EXPECT_DOUBLE_EQ(laws::remanence(v.torque_motor, 40, 40), 0.90);
   EXPECT_NEAR(laws::remanence(v.torque_motor, 120, 40), 0.882, 1e-15);
   auto m = v.torque_motor;
@@ -111,10 +111,11 @@ TEST(TorqueMotorLaw, Remanence)
 TEST(PilotStageLaw, NullGapOfAnAluminiumBody)
 {
   // model.md 2.3: steel chain temperature-neutral; aluminium body (23e-6) gives about +0.08 um/degC
-  const auto steel = test::valve();
+  const auto steel = test::rv1();
   const auto g = laws::pilot_stage_geometry(steel.pilot, steel.armature, steel.expansion, 120, 40);
   EXPECT_NEAR(g.null_gap, 40e-6, 1e-12);
-  const auto aluminium = test::valve({"Thermal expansion/Body=23e-6"});
+  auto aluminium = test::rv1();
+  aluminium.expansion.body = 23e-6; // `Thermal expansion/Body' = 23e-6
   const auto ga = laws::pilot_stage_geometry(aluminium.pilot, aluminium.armature, aluminium.expansion, 120, 40);
   EXPECT_NEAR((ga.null_gap - 40e-6) / 80, 0.08e-6, 0.004e-6); // "about 0.08": within 5 %
 }

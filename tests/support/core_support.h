@@ -1,0 +1,22 @@
+#pragma once
+// Helpers of the tests that link only the valve's lean core (core_tests): temporary directories,
+// RV-1 read from examples/rv1.prm without deal.II, relative differences.
+#include "common/valve_description.h"
+
+#include <string>
+
+namespace servodrift::test
+{
+  /// A fresh, empty temporary directory (removed at the end of a passing test program).
+  std::string temporary_directory();
+  /// Removes every directory temporary_directory() made in this process (the test main calls it
+  /// when all tests passed; a failure keeps them for inspection).
+  void remove_temporary_directories();
+  /// RV-1 as examples/rv1.prm prints it (`servodrift params', kept in sync by cli.files_in_sync),
+  /// read by the lean reader: the defaults without deal.II.
+  ValveDescription rv1();
+  /// Relative difference |a - b|/|b|.
+  double relative(double a, double b);
+  /// A measured value as a test records it (RecordProperty): 6 significant digits.
+  std::string number(double value);
+} // namespace servodrift::test
