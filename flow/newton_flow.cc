@@ -47,7 +47,6 @@ namespace servodrift::flow
   {
   public:
     explicit NewtonProblem(SimplecSolver::Implementation &d);
-    std::size_t size() const { return n_unknowns; }
     void pack(Eigen::VectorXd &x) const;
     bool residual(const Eigen::VectorXd &x, Eigen::VectorXd &R) override;
     void jacobian(const Eigen::VectorXd &x, const Eigen::VectorXd &R, Eigen::SparseMatrix<double> &J) override;

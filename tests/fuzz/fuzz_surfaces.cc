@@ -179,6 +179,26 @@ namespace fuzz
     return name + ": " + what;
   }
 
+  bool bad_entry_under(Rng &rng, const Context &c, const std::vector<std::string> &prefixes,
+                       std::vector<Setting> &hostile, std::vector<std::string> &labels)
+  {
+    std::vector<std::size_t> pool;
+    for (auto e : c.prm.entries)
+      for (const auto &prefix : prefixes)
+        if (c.prm.lines[e].path.rfind(prefix, 0) == 0)
+          {
+            pool.push_back(e);
+            break;
+          }
+    if (pool.empty())
+      return false;
+    const PrmLine &l = c.prm.lines[rng.pick(pool)];
+    const Replacement r = bad_value(rng, l.value, c.values);
+    hostile.push_back({l.path, r.value});
+    labels.push_back("`" + l.path + "' = " + r.label);
+    return true;
+  }
+
   void surface_args(Rng &rng, const Context &c, Mutation &m, const std::string &command,
                     const std::vector<std::string> &positionals, const std::vector<Setting> &base,
                     const std::vector<Setting> &hostile)
@@ -331,19 +351,7 @@ namespace fuzz
               set("Spool/Brake volume", rng.pick(std::vector<std::string>{"0", "1e-15", "1"}));
             break;
           default:
-            {
-              // any bad value of a Dynamics or Spool entry (bytes, non-finite, lists, another's value)
-              std::vector<std::size_t> pool;
-              for (auto e : c.prm.entries)
-                if (c.prm.lines[e].path.rfind("Dynamics/", 0) == 0 || c.prm.lines[e].path.rfind("Spool/", 0) == 0)
-                  pool.push_back(e);
-              if (pool.empty())
-                break;
-              const PrmLine &l = c.prm.lines[rng.pick(pool)];
-              const Replacement r = bad_value(rng, l.value, c.values);
-              hostile.push_back({l.path, r.value});
-              labels.push_back("`" + l.path + "' = " + r.label);
-            }
+            bad_entry_under(rng, c, {"Dynamics/", "Spool/"}, hostile, labels);
         }
     for (std::size_t k = 0; k < labels.size(); ++k)
       m.description += (k ? "; " : "") + labels[k];

@@ -25,6 +25,11 @@ namespace fuzz
   /// The entries under `prefix' ("Dynamics/") that have a declared numeric range.
   std::vector<std::string> ranged_entries(const Context &c, const std::string &prefix);
 
+  /// A bad value (bytes, non-finite, lists, another entry's value) of one entry under any of
+  /// `prefixes' ("Dynamics/"), appended to `hostile' with its label; false if there is no such entry.
+  bool bad_entry_under(Rng &rng, const Context &c, const std::vector<std::string> &prefixes,
+                       std::vector<Setting> &hostile, std::vector<std::string> &labels);
+
   /// An entry the system model reads beside the tables (Operating conditions, Sweeps, Fluid, Spool, ...)
   /// at or beyond its range: it may disagree with the tables the output directory holds.
   Setting valve_range_setting(Rng &rng, const Context &c, std::string &label);

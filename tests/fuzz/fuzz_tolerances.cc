@@ -269,17 +269,7 @@ namespace fuzz
                 break;
               }
             default:
-              {
-                // any bad value (bytes, non-finite, huge lists) of any entry under Tolerances
-                std::vector<std::size_t> pool;
-                for (auto e : c.prm.entries)
-                  if (c.prm.lines[e].path.rfind("Tolerances/", 0) == 0)
-                    pool.push_back(e);
-                const PrmLine &l = c.prm.lines[rng.pick(pool)];
-                const Replacement r = bad_value(rng, l.value, c.values);
-                hostile.push_back({l.path, r.value});
-                labels.push_back("`" + l.path + "' = " + r.label);
-              }
+              bad_entry_under(rng, c, {"Tolerances/"}, hostile, labels); // bytes, non-finite, huge lists
           }
       }
     for (std::size_t k = 0; k < labels.size(); ++k)
