@@ -205,10 +205,12 @@ namespace servodrift
       }
   }
 
+  std::string temporary_beside(const std::string &path) { return path + ".tmp." + std::to_string(::getpid()); }
+
   void write_file_atomically(const std::string &path, const std::string &content)
   {
     check_finite_text(path, content);
-    const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+    const std::string temporary = temporary_beside(path);
     {
       std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
       if (!out)

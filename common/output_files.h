@@ -18,6 +18,9 @@ namespace servodrift
   /// missing-value marker); other files are not looked at.
   void check_finite_text(const std::string &path, const std::string &content);
 
+  /// The temporary file beside `path' that a writer fills before install_file() renames it.
+  std::string temporary_beside(const std::string &path);
+
   /// Renames a complete `temporary' file (written beside `path') to `path', through the run's
   /// OutputTransaction if one is open. Removes `temporary' and throws InputError on failure.
   void install_file(const std::string &temporary, const std::string &path);

@@ -13,7 +13,6 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace servodrift
 {
@@ -62,11 +61,6 @@ namespace servodrift
       void operator()(matvar_t *v) const { Mat_VarFree(v); }
     };
     using MatVariable = std::unique_ptr<matvar_t, MatFree>;
-
-    std::string temporary_beside(const std::string &path)
-    {
-      return path + ".part." + std::to_string(::getpid());
-    }
 
     MatVariable mat_array(const std::vector<double> &values, std::vector<std::size_t> dims)
     {

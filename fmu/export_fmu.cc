@@ -17,7 +17,6 @@
 #include <filesystem>
 #include <sstream>
 #include <tuple>
-#include <unistd.h>
 #include <utility>
 #include <vector>
 
@@ -30,7 +29,7 @@ namespace servodrift::fmu
     /// Writes the entries as a zip archive through a temporary file and the run's transaction.
     void write_zip(const std::string &path, const Entries &entries)
     {
-      const std::string temporary = path + ".part." + std::to_string(::getpid());
+      const std::string temporary = temporary_beside(path);
       zipFile zip = zipOpen64(temporary.c_str(), APPEND_STATUS_CREATE);
       if (!zip)
         throw InputError(temporary + ": cannot be written");

@@ -5,7 +5,6 @@
 #include "common/output_files.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
-#include "common/table_formats.h"
 #include "common/units.h"
 #include "common/version.h"
 #include "system/dynamics_output.h"
@@ -25,6 +24,9 @@ namespace servodrift::system
     const ValveModel model(valve, tables);
     SystemResults results;
     results.warnings = tables.warnings;
+    if (valve.output.mat_tables || valve.output.modelica_tables)
+      for (const Table *t : {&tables.torque_motor, &tables.spring_tube, &tables.fixed_orifice, &tables.nozzle_flapper})
+        results.table_grids.push_back(gridded(*t));
     for (const Table *t : {&tables.torque_motor, &tables.spring_tube, &tables.fixed_orifice, &tables.nozzle_flapper})
       results.table_producers.push_back(t->name() + ": " + t->producer);
     for (double T : valve.sweeps.drift_temperatures)
@@ -173,6 +175,7 @@ namespace servodrift::system
                             to_string(p.rated_current.flapper), to_string(p.rated_current.spool.state)});
       write_file_atomically(dir + "/drift_map.csv", doc.text());
     }
+
     /// The drift map on its grid (temperature fastest), in SI units; an undefined null-shift current
     /// is 0 with `null_shift_current_defined' = 0 (no NaN in an output file)
     GriddedData gridded_drift_map(const DriftMap &m)
@@ -208,10 +211,7 @@ namespace servodrift::system
     {
       if (!valve.output.mat_tables && !valve.output.modelica_tables)
         return;
-      const StageTables tables = StageTables::read(tables_directory(valve), valve);
-      std::vector<GriddedData> data;
-      for (const Table *t : {&tables.torque_motor, &tables.spring_tube, &tables.fixed_orifice, &tables.nozzle_flapper})
-        data.push_back(gridded(*t));
+      std::vector<GriddedData> data = r.table_grids;
       data.push_back(gridded_drift_map(r.drift_map));
       if (valve.output.mat_tables)
         write_mat(tables_directory(valve) + "/servodrift_tables.mat", data);

@@ -2,6 +2,7 @@
 // The system stage: from the four coefficient tables to the stage coefficients, the operating
 // points, the drift maps, their plots and the report.
 #include "common/fitting.h"
+#include "common/table_formats.h"
 #include "common/valve_description.h"
 #include "system/drift_map.h"
 #include "system/dynamics.h"
@@ -30,6 +31,8 @@ namespace servodrift::system
     /// the default's and each model-form alternative's coefficients (issue 28; only the default's
     /// when `Pilot stage/Model-form alternatives' is empty)
     std::vector<ModelFormCoefficients> model_form;
+    /// the four tables on their grids, when `Output/Formats' asks for mat or modelica
+    std::vector<GriddedData> table_grids;
   };
 
   /// The analyses beyond the static ones (stage coefficients, operating points, drift maps).

@@ -34,15 +34,6 @@ namespace servodrift
     return a;
   }
 
-  namespace
-  {
-    std::string trim(const std::string &s)
-    {
-      const auto b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
-      return b == std::string::npos ? "" : s.substr(b, e - b + 1);
-    }
-  } // namespace
-
   void ToleranceParameters::parse_parameters(ParameterSource &prm)
   {
     prm.enter_subsection(subsection);
@@ -88,17 +79,17 @@ namespace servodrift
                        " (allowed: `Quantity A : Quantity B : rho' separated by commas, rho in (-1, 1), the "
                        "quantities named as the subsections of `Tolerances')");
     };
-    const bool any = !trim(text).empty();
+    const bool any = !trimmed(text).empty();
     std::size_t position = 0;
     while (std::getline(items, item, ','))
       {
         ++position;
-        if (trim(item).empty())
+        if (trimmed(item).empty())
           refuse("has an empty item (item " + std::to_string(position) + ")");
         std::vector<std::string> parts;
         std::stringstream fields(item);
         for (std::string field; std::getline(fields, field, ':');)
-          parts.push_back(trim(field));
+          parts.push_back(trimmed(field));
         if (parts.size() != 3)
           refuse("has an item that is not `A : B : rho'");
         Correlation c{};
