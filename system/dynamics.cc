@@ -119,13 +119,26 @@ namespace servodrift::system
     const double bias = p.bias * rated;
 
     // cases: first each temperature's linear analyses and steps, then each study temperature's
-    // sweeps at each study amplitude (the costliest first), then each temperature and frequency's check
+    // sweeps at each study amplitude (the costliest first), then each temperature and frequency's
+    // check, then the cold-soak starts
     const std::size_t n_a = p.sine_amplitudes.size();
     const std::vector<std::size_t> studied = study_indices(n_T, p.large_signal_temperatures);
-    const std::size_t n_S = studied.size(), first_check = n_T + n_S * n_a;
+    const std::size_t n_S = studied.size(), first_check = n_T + n_S * n_a, first_cold = first_check + n_T * n_f;
+    // the cold-soak starts the tables reach
+    std::vector<double> cold;
+    for (double T : p.cold_start_temperatures)
+      if (T >= valve.sweeps.table_temperatures.front() && T <= valve.sweeps.table_temperatures.back())
+        cold.push_back(T);
+    const std::size_t n_C = cold.size();
     const CaseRows rows = run_sweep(
-      "dynamics", first_check + n_T * n_f,
+      "dynamics", first_cold + n_C,
       [&](std::size_t c) {
+        if (c >= first_cold) // a cold-soak start, at its own temperature
+          {
+            const double T = cold[c - first_cold];
+            const ValveDynamics dynamics(model.equations(T, offsets), amplifier, rated);
+            return CaseRows{row_of(ColdStart{T, start_up_response(model, dynamics, p.cold_start_current * rated, p, 600)})};
+          }
         const std::size_t k = c < n_T ? c : c < first_check ? studied[(c - n_T) / n_a] : (c - first_check) / n_f;
         const ValveDynamics dynamics(model.equations(temperatures[k], offsets), amplifier, rated);
         const OperatingPoint point = model.solve(dynamics.equations(), dynamics.steady_current(bias));
@@ -162,6 +175,8 @@ namespace servodrift::system
             }
         results.temperatures.push_back(std::move(d));
       }
+    for (std::size_t c = 0; c < n_C; ++c)
+      results.cold_starts.push_back(object_of<ColdStart>(rows[first_cold + c]));
     if (p.fixed_time_study)
       results.fixed_time = fixed_time_study(model, amplifier, progress);
     return results;

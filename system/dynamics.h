@@ -42,9 +42,17 @@ namespace servodrift::system
     bool stable() const;
   };
 
+  /// A cold-soak start (issue 65): the valve at rest at one temperature, supply and command applied
+  struct ColdStart
+  {
+    double temperature = 0; ///< [degC]
+    StepResponse response;  ///< from rest (start_up_response)
+  };
+
   struct DynamicsResults
   {
     std::vector<TemperatureDynamics> temperatures; ///< the drift temperatures
+    std::vector<ColdStart> cold_starts;            ///< at `Dynamics/Cold-start temperatures'
     std::vector<FixedTimeStudy> fixed_time;        ///< model.md C9, when `Dynamics/Fixed-time study'
   };
 

@@ -97,7 +97,9 @@ namespace servodrift::system
     {
       CsvDocument doc = document(valve, "step_response",
                                  "nonlinear step responses from the static operating point of the first current: "
-                                 "large = 0 -> rated current, small = bias -> bias + `Dynamics/Small step'");
+                                 "large = 0 -> rated current, small = bias -> bias + `Dynamics/Small step'; "
+                                 "cold-start = from rest (every pressure at return) with supply and `Dynamics/"
+                                 "Cold-start current' applied, at `Dynamics/Cold-start temperatures'");
       doc.columns = {"temperature[degC]", "step[-]", "time[s]", "command_current[A]", "coil_current[A]", "angle[rad]",
                      "flapper_displacement[m]", "left_pressure[Pa]", "right_pressure[Pa]", "spool_displacement[m]",
                      "brake_pressure[Pa]"};
@@ -109,27 +111,32 @@ namespace servodrift::system
                          "overshoot[%]", "settling_time[s]", "duration[s]", "final_distance[1]", "flapper_contact[-]",
                          "spool_on_stop[-]", "beyond_tables[-]", "steps[1]"};
       const double r_pivot = valve.armature.pivot_to_nozzle_distance;
-      for (const auto &d : r.temperatures)
-        for (const auto &[name, s] : {std::pair<const char *, const StepResponse *>{"large", &d.large_step},
-                                      std::pair<const char *, const StepResponse *>{"small", &d.small_step}})
+      const auto add = [&](double T, const char *name, const StepResponse *s, double hydraulic_null) {
+        for (std::size_t k = 0; k < s->times.size(); ++k)
           {
-            for (std::size_t k = 0; k < s->times.size(); ++k)
-              {
-                const ValveState &x = s->states[k];
-                doc.rows.push_back({cell(d.temperature), name, cell(s->times[k]), cell(k == 0 ? s->from_current : s->to_current),
-                                    cell(x.coil_current), cell(x.angle), cell(r_pivot * x.angle - d.hydraulic_null),
-                                    cell(x.left_pressure), cell(x.right_pressure), cell(x.spool_displacement),
-                                    cell(x.brake_pressure)});
-              }
-            for (std::size_t k = 0; k < step_outputs.size(); ++k)
-              {
-                const StepMetrics &m = s->metrics[k];
-                metrics.rows.push_back({cell(d.temperature), name, step_outputs[k], cell(m.initial), cell(m.final),
-                                        cell(m.rise_time), cell(m.overshoot), cell(m.settling_time), cell(s->duration),
-                                        cell(s->final_distance), flag(s->flapper_contact), flag(s->spool_on_stop),
-                                        flag(s->left_tables), cell(double(s->statistics.steps))});
-              }
+            const ValveState &x = s->states[k];
+            doc.rows.push_back({cell(T), name, cell(s->times[k]), cell(k == 0 ? s->from_current : s->to_current),
+                                cell(x.coil_current), cell(x.angle), cell(r_pivot * x.angle - hydraulic_null),
+                                cell(x.left_pressure), cell(x.right_pressure), cell(x.spool_displacement),
+                                cell(x.brake_pressure)});
           }
+        for (std::size_t k = 0; k < step_outputs.size(); ++k)
+          {
+            const StepMetrics &m = s->metrics[k];
+            metrics.rows.push_back({cell(T), name, step_outputs[k], cell(m.initial), cell(m.final), cell(m.rise_time),
+                                    cell(m.overshoot), cell(m.settling_time), cell(s->duration), cell(s->final_distance),
+                                    flag(s->flapper_contact), flag(s->spool_on_stop), flag(s->left_tables),
+                                    cell(double(s->statistics.steps))});
+          }
+      };
+      for (const auto &d : r.temperatures)
+        {
+          add(d.temperature, "large", &d.large_step, d.hydraulic_null);
+          add(d.temperature, "small", &d.small_step, d.hydraulic_null);
+        }
+      const double hydraulic_null = r.temperatures.empty() ? 0.0 : r.temperatures.front().hydraulic_null;
+      for (const ColdStart &c : r.cold_starts)
+        add(c.temperature, "cold-start", &c.response, hydraulic_null);
       write_file_atomically(dir + "/step_response.csv", doc.text());
       write_file_atomically(dir + "/step_metrics.csv", metrics.text());
     }
@@ -145,7 +152,8 @@ namespace servodrift::system
                                  " deg, or " + std::to_string(SineCheckLimits::halvings) + " halvings), study-up and study-down = `Dynamics/Sine amplitudes' with "
                                  "the frequencies swept up and down, each starting from its neighbour's periodic "
                                  "state; first harmonics over the input's, amplitude in dB relative to the linear DC "
-                                 "gain of each output");
+                                 "gain of each output; integration_failed = the time integration stopped (the "
+                                 "report names why), not periodic");
       doc.columns = {"temperature[degC]", "frequency[Hz]", "kind[-]", "amplitude_of_rated[1]", "amplitude[A]",
                      "brake_pressure_amplitude[dB]", "brake_pressure_phase[deg]", "linear_brake_pressure_amplitude[dB]",
                      "linear_brake_pressure_phase[deg]", "spool_displacement_amplitude[dB]",
@@ -153,7 +161,7 @@ namespace servodrift::system
                      "periodic[-]", "response_periods[1]", "periods[1]", "distortion[1]", "subharmonic[1]",
                      "brake_pressure_minimum[Pa]", "brake_pressure_maximum[Pa]", "spool_displacement_minimum[m]",
                      "spool_displacement_maximum[m]", "flapper_contact[-]", "beyond_lap[-]", "spool_on_stop[-]",
-                     "beyond_tables[-]"};
+                     "beyond_tables[-]", "integration_failed[-]"};
       const double rated = valve.operating.rated_current;
       for (const auto &d : r.temperatures)
         {
@@ -162,14 +170,17 @@ namespace servodrift::system
               const SineCheck &c = d.sine_checks[j];
               const auto &dc = c.dc_gain;
               auto row = [&](const char *kind, const SineResponse &s) {
+                // a response whose integration failed within its first period has no harmonics
+                const bool measured = s.periods > 0;
+                const auto in = [&](double v) { return measured ? cell(v) : std::string(); };
                 doc.rows.push_back(
                   {cell(d.temperature), cell(s.frequency), kind, cell(s.amplitude / rated), cell(s.amplitude),
-                   cell(decibel(s.gain[0] / dc[0])), cell(degrees(s.gain[0] / dc[0])), cell(decibel(c.linear[0] / dc[0])),
-                   cell(degrees(c.linear[0] / dc[0])), cell(decibel(s.gain[1] / dc[1])), cell(degrees(s.gain[1] / dc[1])),
-                   cell(decibel(s.gain[2] / dc[2])), cell(degrees(s.gain[2] / dc[2])), flag(s.periodic),
-                   cell(double(s.response_periods)), cell(double(s.periods)), cell(s.distortion), cell(s.subharmonic),
-                   cell(s.minimum[0]), cell(s.maximum[0]), cell(s.minimum[1]), cell(s.maximum[1]), flag(s.flapper_contact),
-                   flag(s.beyond_lap), flag(s.spool_on_stop), flag(s.left_tables)});
+                   in(decibel(s.gain[0] / dc[0])), in(degrees(s.gain[0] / dc[0])), cell(decibel(c.linear[0] / dc[0])),
+                   cell(degrees(c.linear[0] / dc[0])), in(decibel(s.gain[1] / dc[1])), in(degrees(s.gain[1] / dc[1])),
+                   in(decibel(s.gain[2] / dc[2])), in(degrees(s.gain[2] / dc[2])), flag(s.periodic),
+                   cell(double(s.response_periods)), cell(double(s.periods)), in(s.distortion), in(s.subharmonic),
+                   in(s.minimum[0]), in(s.maximum[0]), in(s.minimum[1]), in(s.maximum[1]), flag(s.flapper_contact),
+                   flag(s.beyond_lap), flag(s.spool_on_stop), flag(s.left_tables), flag(!s.failure.empty())});
               };
               for (std::size_t k = 0; k + 1 < c.halvings.size(); ++k)
                 row("check-halving", c.halvings[k]);

@@ -45,6 +45,39 @@ namespace servodrift::system
       out << "\n";
     }
 
+    /// The cold-soak starts: how long the brake pressure takes to regulate, and its worst excursion
+    void cold_starts(std::ostream &out, const ValveDescription &valve, const DynamicsResults &r)
+    {
+      const auto &p = valve.dynamics;
+      if (p.cold_start_temperatures.empty())
+        return;
+      out << "### Cold-soak start\n\nThe valve soaked at each temperature and at rest (every pressure at return, "
+             "armature and spool centred); at t = 0 the supply and "
+          << fmt(1e3 * p.cold_start_current * valve.operating.rated_current) << " mA ("
+          << fmt(100 * p.cold_start_current)
+          << " % of rated) are applied. Time to regulate: from then until p_B stays within 2 % of the change to its "
+             "static value; overshoot: p_B's largest excursion beyond that value, in % of the change (`system/"
+             "step_metrics.csv` and `step_response.csv`, step `cold-start`).\n\n"
+          << "| T [degC] | p_B final [MPa] | time to regulate [s] | rise 10-90 % [ms] | overshoot [%] | simulated [s] | "
+             "flapper on a nozzle | spool on a stop |\n|---|---|---|---|---|---|---|---|\n";
+      for (const ColdStart &c : r.cold_starts)
+        {
+          const StepMetrics &m = c.response.metrics[0];
+          out << "| " << fmt(c.temperature) << " | " << fmt(1e-6 * m.final) << " | "
+              << (m.settling_time ? fmt(*m.settling_time, 3) : "not within " + fmt(c.response.duration, 3))
+              << " | " << fmt(m.rise_time, 1e3) << " | " << fmt(m.overshoot, 3) << " | " << fmt(c.response.duration, 3)
+              << " | " << (c.response.flapper_contact ? "yes" : "no") << " | " << (c.response.spool_on_stop ? "yes" : "no")
+              << " |\n";
+        }
+      std::string skipped;
+      for (double T : p.cold_start_temperatures)
+        if (std::none_of(r.cold_starts.begin(), r.cold_starts.end(), [T](const ColdStart &c) { return c.temperature == T; }))
+          skipped += (skipped.empty() ? "" : ", ") + fmt(T);
+      if (!skipped.empty())
+        out << "\nNot computed, beyond the table temperatures (`Sweeps/Table temperatures`): " << skipped << " degC.\n";
+      out << "\n";
+    }
+
     void checks(std::ostream &out, const ValveDescription &valve, const DynamicsResults &r)
     {
       const double rated = valve.operating.rated_current;
@@ -142,6 +175,33 @@ namespace servodrift::system
       out << "\n";
     }
 
+    /// The sine responses (checks and study) whose time integration stopped: how many, and why the
+    /// first did
+    void failed_integrations(std::ostream &out, const DynamicsResults &r)
+    {
+      std::size_t failed = 0;
+      std::string first;
+      const auto count = [&](const SineResponse &s) {
+        if (s.failure.empty())
+          return;
+        if (failed++ == 0)
+          first = s.failure;
+      };
+      for (const auto &d : r.temperatures)
+        {
+          for (const SineCheck &c : d.sine_checks)
+            for (const SineResponse &s : c.halvings)
+              count(s);
+          for (const auto *study : {&d.sine_study, &d.sine_study_down})
+            for (const auto &at_frequency : *study)
+              for (const SineResponse &s : at_frequency)
+                count(s);
+        }
+      if (failed > 0)
+        out << failed << " sine responses stopped because their time integration failed; they count as not periodic "
+            << "(`integration_failed` in `system/sine_response.csv`). The first: " << first << ".\n\n";
+    }
+
     void study(std::ostream &out, const ValveDescription &valve, const DynamicsResults &r)
     {
       const auto &p = valve.dynamics;
@@ -189,6 +249,7 @@ namespace servodrift::system
              "not of the lap leakage. Up and down sweeps differ where both are periodic and their first harmonics "
              "differ by more than 1 dB or 10 deg: two responses at one frequency, between which a sweep jumps"
           << (jumps.empty() ? " (none here).\n\n" : ": " + jumps + ".\n\n");
+      failed_integrations(out, r);
     }
 
     void fixed_time(std::ostream &out, const FixedTimeStudy &s)
@@ -234,6 +295,7 @@ namespace servodrift::system
           out << "**Unstable at " << fmt(d.temperature) << " degC:** the " << m.name << " mode (" << fmt(m.natural_frequency)
               << " Hz) grows at " << fmt(m.eigenvalue.real()) << " 1/s: the valve oscillates about the bias instead of "
                  "settling on it, so its bandwidth and step figures there describe that oscillation.\n\n";
+    cold_starts(out, valve, r);
     checks(out, valve, r);
     amplitudes_taken(out, valve, r);
     study(out, valve, r);

@@ -95,11 +95,17 @@ namespace boost::serialization
   }
 
   template <class Archive>
+  void serialize(Archive &a, servodrift::system::ColdStart &c, unsigned int)
+  {
+    a &c.temperature &c.response;
+  }
+
+  template <class Archive>
   void serialize(Archive &a, servodrift::system::SineResponse &r, unsigned int)
   {
-    a &r.frequency &r.amplitude &r.periods &r.periodic &r.response_periods &r.extrapolations &r.last_change &r.gain &
+    a &r.frequency &r.amplitude &r.periods &r.periodic &r.response_periods &r.shooting_steps &r.last_change &r.gain &
       r.minimum &r.maximum &r.distortion &r.subharmonic &r.flapper_contact &r.beyond_lap &r.spool_on_stop &
-      r.left_tables;
+      r.left_tables &r.failure;
   }
 
   template <class Archive>

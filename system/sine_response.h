@@ -2,8 +2,8 @@
 // The nonlinear frequency response (issue 23): the command i(t) = i_bias + a sin(2 pi f t), started
 // on the linearisation's own periodic solution (so that a small amplitude starts periodic), is
 // integrated period by period until the state recurs after one period or, for a sub-harmonic, after
-// m periods (a periodic steady state); a slow approach is accelerated by extrapolating the states at
-// the period starts to their limit. Then the first harmonic of each output over the input's, and
+// m periods (a periodic steady state); a slow approach is cut short by Newton steps of the shooting
+// method on the map from one period start to the next. Then the first harmonic of each output over the input's, and
 // how far the response is from linear: the harmonic distortion, the sub-harmonic content, the edges
 // it crossed.
 #include "common/parameters/dynamics.h"
@@ -27,7 +27,7 @@ namespace servodrift::system
     unsigned int periods = 0; ///< periods integrated [1]
     bool periodic = false; ///< the state recurred within `Dynamics/Maximum periods'
     unsigned int response_periods = 1; ///< the response repeats after this many input periods (> 1: a sub-harmonic) [1]
-    unsigned int extrapolations = 0;   ///< restarts from an extrapolated periodic state [1]
+    unsigned int shooting_steps = 0;   ///< Newton steps of the shooting method, each a restart [1]
     double last_change = 0; ///< scaled change of the state over the last period / the motion [1]
     std::array<std::complex<double>, 3> gain{};   ///< first harmonic / input's, per output [unit/A]
     std::array<double, 3> minimum{}, maximum{};  ///< over the last period [SI]
@@ -37,6 +37,7 @@ namespace servodrift::system
     bool beyond_lap = false;      ///< the spool opened a metering edge in the last period
     bool spool_on_stop = false;   ///< the spool reached a stroke limit in the last period
     bool left_tables = false; ///< a pressure went beyond the flow tables (constant C_d)
+    std::string failure;      ///< why the time integration stopped, if it did (then not periodic)
     std::vector<double> final_state; ///< the state at the last period's end (input phase 0); not archived
   };
 

@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "common/units.h"
 #include "system/linear_analysis.h"
+#include "system/steady_state_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -75,34 +76,37 @@ namespace servodrift::system
   } // namespace
 
   double step_duration(const ValveModel &model, const ValveDynamics &dynamics, double to,
-                       const DynamicsParameters &p)
+                       const DynamicsParameters &p, double longest)
   {
     if (p.step_duration > 0)
       return p.step_duration;
     const OperatingPoint end = model.solve(dynamics.equations(), dynamics.steady_current(to));
     const double rate = slowest_decay_rate(linearise(dynamics, end.state(), to));
-    return std::clamp(8 / rate, 0.02, 10.0);
+    return std::clamp(8 / rate, 0.02, longest);
   }
 
-  StepResponse step_response(const ValveModel &model, const ValveDynamics &dynamics, double from, double to,
-                             const DynamicsParameters &p, unsigned int samples)
+  namespace
+  {
+    /// The response to the command `to' from the state y0, to the static point at `to'
+    StepResponse response_from(const ValveModel &model, const ValveDynamics &dynamics, const std::vector<double> &y0,
+                               double from, double to, double duration, const DynamicsParameters &p,
+                               unsigned int samples, const std::string &what)
   {
     const ValveEquations &eq = dynamics.equations();
-    const OperatingPoint start = model.solve(eq, dynamics.steady_current(from));
     const OperatingPoint end = model.solve(eq, dynamics.steady_current(to));
     StepResponse r;
     r.from_current = from;
     r.to_current = to;
-    r.duration = step_duration(model, dynamics, to, p);
+    r.duration = duration;
 
-    const std::vector<double> y0 = dynamics.vector_of(start.state()), y1 = dynamics.vector_of(end.state());
+    const std::vector<double> y1 = dynamics.vector_of(end.state());
     const auto before = outputs(dynamics, y0), after = outputs(dynamics, y1);
     std::vector<StepTracker> trackers;
     for (std::size_t k = 0; k < 3; ++k)
       trackers.emplace_back(before[k], after[k]);
 
-    const auto integrator = dynamics.integrator([to](double) { return to; }, p,
-                                                "step response at " + format_number(eq.temperature()) + " degC", y1);
+    const auto integrator =
+      dynamics.integrator([to](double) { return to; }, p, what + " at " + format_number(eq.temperature()) + " degC", y1);
     integrator->start(0.0, y0);
     eq.forget_table_excursions();
     // half the samples over the whole step, half over its first 10 ms, where the armature moves
@@ -136,5 +140,21 @@ namespace servodrift::system
     r.left_tables = eq.left_tables();
     r.statistics = integrator->statistics();
     return r;
+  }
+  } // namespace
+
+  StepResponse step_response(const ValveModel &model, const ValveDynamics &dynamics, double from, double to,
+                             const DynamicsParameters &p, unsigned int samples)
+  {
+    const OperatingPoint start = model.solve(dynamics.equations(), dynamics.steady_current(from));
+    return response_from(model, dynamics, dynamics.vector_of(start.state()), from, to,
+                         step_duration(model, dynamics, to, p), p, samples, "step response");
+  }
+
+  StepResponse start_up_response(const ValveModel &model, const ValveDynamics &dynamics, double to,
+                                 const DynamicsParameters &p, unsigned int samples)
+  {
+    return response_from(model, dynamics, dynamics.vector_of(rest_state(dynamics.equations())), 0.0, to,
+                         step_duration(model, dynamics, to, p, longest_start_up), p, samples, "start-up");
   }
 } // namespace servodrift::system

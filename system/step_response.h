@@ -41,10 +41,21 @@ namespace servodrift::system
   };
 
   /// The simulated time of a step to `to_current': `Dynamics/Step duration', or 8 time constants of
-  /// the slowest mode at the end point (at least 20 ms, at most 10 s).
+  /// the slowest mode at the end point (at least 20 ms, at most `longest').
   double step_duration(const ValveModel &model, const ValveDynamics &dynamics, double to_current,
-                       const DynamicsParameters &parameters);
+                       const DynamicsParameters &parameters, double longest = 10);
 
+  /// From the static point at `from_current' to the command `to_current'.
   StepResponse step_response(const ValveModel &model, const ValveDynamics &dynamics, double from_current,
                              double to_current, const DynamicsParameters &parameters, unsigned int samples);
+
+  /// The longest start-up [s]: at -55 degC RV-1's spool and brake-volume loop decays over 5.5 s, and
+  /// a start-up is read for the time it takes to regulate, so it runs until that loop has settled.
+  constexpr double longest_start_up = 60;
+
+  /// The start-up from rest (every pressure at return, armature and spool centred: a valve soaked at
+  /// the equations' temperature) with the supply and the command `to_current' applied at t = 0: the
+  /// cold-soak start of issue 65. from_current is 0; the metrics' initial values are the rest state's.
+  StepResponse start_up_response(const ValveModel &model, const ValveDynamics &dynamics, double to_current,
+                                 const DynamicsParameters &parameters, unsigned int samples);
 } // namespace servodrift::system

@@ -51,13 +51,23 @@ namespace servodrift
                       "there are fewer). The linear analyses, the steps and the sine check run at every "
                       "drift temperature; the study is the dynamics' costliest part (doc/performance.md). "
                       "[1]");
+    prm.declare_entry("Cold-start temperatures", "-55, -40, -20, 40", double_list(-273.15, 1000, 0),
+                      "Temperatures of the cold-soak start: the valve at that temperature throughout and at "
+                      "rest (every pressure at return), supply and `Cold-start current' applied at t = 0; "
+                      "the report gives the time until p_B stays within 2 % of its final value and its "
+                      "overshoot. Strictly increasing; one beyond the table temperatures is skipped, and "
+                      "the report says so (the default suits the default tables); empty for none. [degC]");
+    prm.declare_entry("Cold-start current", "1", Patterns::Double(0, 100),
+                      "Command of the cold-soak start as a fraction of the rated current (1: the brake "
+                      "applied fully). [1]");
     prm.declare_entry("Samples per period", "64", Patterns::Integer(8, 100000),
                       "Samples per period of a sine response from which its harmonics are computed. [1]");
     prm.declare_entry("Maximum periods", "40", Patterns::Integer(2, 100000),
                       "Periods a sine response may take to become periodic (its state recurs after one "
-                      "period, or after m <= 32 periods for a sub-harmonic, within `Periodic tolerance'), "
-                      "and at least 4 time constants of the valve's slowest mode; one that does not is "
-                      "reported as not periodic. [1]");
+                      "period, or after m <= 32 periods for a sub-harmonic, within `Periodic tolerance'); "
+                      "one that does not is reported as not periodic. Newton steps on the period map "
+                      "(shooting) shorten a slow approach; the periods their Jacobians take are not "
+                      "counted. [1]");
     prm.declare_entry("Periodic tolerance", "1e-3", Patterns::Double(1e-12, 1),
                       "Largest change of the state over one period (or m periods), in each state's scale, "
                       "relative to the motion of the outputs, of a periodic steady state; it bounds the "

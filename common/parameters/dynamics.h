@@ -22,6 +22,8 @@ namespace servodrift
     double linearity_margin;            ///< linear excursion / distance to the nearest edge [1]
     std::vector<double> sine_amplitudes; ///< amplitudes of the large-signal study / rated [1]
     unsigned int large_signal_temperatures; ///< how many drift temperatures the study runs at [1]
+    std::vector<double> cold_start_temperatures; ///< of the cold-soak start-ups (issue 65) [degC]
+    double cold_start_current;          ///< their command / rated [1]
     unsigned int samples_per_period;    ///< output samples per period for the harmonics [1]
     unsigned int maximum_periods;       ///< periods allowed to reach a periodic steady state [1]
     double periodic_tolerance;          ///< change of the first harmonic between two periods [1]

@@ -21,6 +21,8 @@ namespace servodrift
     linearity_margin = prm.get_double("Linearity margin");
     sine_amplitudes = prm.get_double_list("Sine amplitudes");
     large_signal_temperatures = static_cast<unsigned int>(prm.get_integer("Large-signal temperatures"));
+    cold_start_temperatures = prm.get_double_list("Cold-start temperatures");
+    cold_start_current = prm.get_double("Cold-start current");
     samples_per_period = prm.get_integer("Samples per period");
     maximum_periods = prm.get_integer("Maximum periods");
     periodic_tolerance = prm.get_double("Periodic tolerance");
