@@ -83,11 +83,36 @@ namespace servodrift
       }
   }
 
-  void validate_tolerances(const ValveDescription &v)
+  void validate_null_shift_spec(const ValveDescription &v)
   {
     const auto &t = v.tolerances;
     if (!(t.null_shift_spec > 0))
       refuse("Tolerances/Null-shift spec", "= 0 % must be > 0 (allowed: (0, 100] % of the rated current)");
+    if (t.null_shift_spec_form != ToleranceParameters::SpecForm::table)
+      return;
+    const auto &table = t.null_shift_spec_table;
+    const std::string entry = "Tolerances/Null-shift spec table";
+    if (table.size() < 2)
+      refuse(entry, "has " + std::to_string(table.size()) + " pairs; `Null-shift spec form' = table needs at least 2");
+    for (std::size_t k = 0; k < table.size(); ++k)
+      {
+        if (k > 0 && !(table[k].first > table[k - 1].first))
+          refuse(entry, "has " + format_number(table[k].first) + " degC after " + format_number(table[k - 1].first) +
+                          " degC: the temperatures must be strictly increasing");
+        if (!(table[k].second >= 0 && table[k].second <= 1))
+          refuse(entry, "allows " + format_number(100 * table[k].second) + " % at " + format_number(table[k].first) +
+                          " degC (allowed: 0 to 100 % of the rated current)");
+      }
+    const auto &drift = v.sweeps.drift_temperatures;
+    if (drift.front() < table.front().first || drift.back() > table.back().first)
+      refuse(entry, "covers " + format_number(table.front().first) + " to " + format_number(table.back().first) +
+                      " degC, not the drift temperatures' " + format_number(drift.front()) + " to " +
+                      format_number(drift.back()) + " degC (`Sweeps/Drift temperatures')");
+  }
+
+  void validate_tolerances(const ValveDescription &v)
+  {
+    const auto &t = v.tolerances;
     if (t.sobol_base_samples > 0 && t.sobol_base_samples < 64)
       refuse("Tolerances/Sobol base samples", "= " + std::to_string(t.sobol_base_samples) +
                                                 " is too few for an estimate with a bootstrap interval (allowed: 0, "

@@ -121,4 +121,7 @@ namespace servodrift
   /// The tolerance study's distributions, correlations and spec; validate() runs it when
   /// `Tolerances/Enabled'.
   void validate_tolerances(const ValveDescription &valve);
+  /// The null-shift spec: > 0, and a table that is increasing, within 0-100 % and covers the drift
+  /// temperatures (tolerance_validation.cc)
+  void validate_null_shift_spec(const ValveDescription &valve);
 } // namespace servodrift

@@ -56,6 +56,14 @@ namespace servodrift::system
         }
       write_file_atomically(dir + "/drift_lines.dat", lines.str());
 
+      // the null-shift spec's band (`Tolerances/Null-shift spec')
+      std::ostringstream spec;
+      spec << "# temperature[degC] allowed_null_shift_current_of_rated[%]\n";
+      for (double T : m.temperatures)
+        spec << format_cell(T) << ' '
+             << format_cell(100 * valve.tolerances.null_shift_limit(T, valve.operating.reference_temperature)) << "\n";
+      write_file_atomically(dir + "/null_shift_spec.dat", spec.str());
+
       // stage coefficients relative to their value at the first drift temperature
       std::ostringstream coefficients;
       const auto &c0 = r.coefficients.front();
@@ -98,7 +106,8 @@ namespace servodrift::system
         {"null_shift_current_lines",
          line_common + "set ylabel 'null-shift current [% of rated]'\nset title 'Current that restores null'\n"
                        "plot for [k=0:words(titles)-1] 'drift_lines.dat' index k using 1:4 with linespoints title "
-                       "'theta_d = '.word(titles,k+1)\n"},
+                       "'theta_d = '.word(titles,k+1), 'null_shift_spec.dat' using 1:2 with lines lw 2 lc 'red' "
+                       "title 'spec', '' using 1:(-$2) with lines lw 2 lc 'red' notitle\n"},
         {"stage_coefficients",
          "set xlabel 'temperature [degC]'\nset ylabel 'relative to the first temperature'\nset grid\nset key outside right\n"
          "set title 'Stage coefficients vs temperature'\n"

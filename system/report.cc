@@ -8,6 +8,7 @@
 #include "system/tolerance_output.h"
 #include "system/system_stage.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -235,6 +236,50 @@ namespace servodrift::system
           << " at 120 degC. Pilot null pressure shift p_L - p_R at i = 0: " << fmt(p40.null_pressure_shift * 1e-3)
           << " kPa at 40 degC, " << fmt(p120.null_pressure_shift * 1e-3) << " kPa at 120 degC.\n\n";
     }
+
+    /// The drift map's null-shift current against `Tolerances/Null-shift spec' (a band over T): at
+    /// the table temperatures among the drift temperatures and the two largest deviation angles of
+    /// either sign, and whether every point of the map is within it.
+    void null_shift_against_spec(std::ostream &out, const ValveDescription &valve, const DriftMap &m)
+    {
+      const auto &t = valve.tolerances;
+      const double T0 = valve.operating.reference_temperature, rated = valve.operating.rated_current;
+      std::size_t beyond = 0, unknown = 0;
+      std::string first;
+      for (std::size_t k = 0; k < m.temperatures.size(); ++k)
+        for (std::size_t a = 0; a < m.deviation_angles.size(); ++a)
+          {
+            const auto &i = m.at(k, a).null_shift_current;
+            if (!i)
+              ++unknown;
+            else if (!t.within_null_shift_spec(*i, m.temperatures[k], rated, T0) && beyond++ == 0)
+              first = fmt(100 * *i / rated) + " % at " + fmt(m.temperatures[k]) + " degC, theta_d = " +
+                      fmt(m.deviation_angles[a] / units::degree) + " deg, where " +
+                      fmt(100 * t.null_shift_limit(m.temperatures[k], T0)) + " % is allowed";
+          }
+      out << "Null-shift current against the spec |null-shift current| <= " << t.null_shift_spec_text(T0)
+          << " (`Tolerances/Null-shift spec`): ";
+      if (beyond == 0 && unknown == 0)
+        out << "**within** it at every drift temperature and deviation angle.\n\n";
+      else
+        out << "**beyond** it at " << beyond << " of " << m.points.size() << " points of the map"
+            << (beyond ? " (the first: " + first + ")" : std::string()) << (unknown ? ", " + std::to_string(unknown) +
+               " without a null within the torque table's currents" : std::string()) << ".\n\n";
+      const std::size_t a_low = 0, a_high = m.deviation_angles.size() - 1;
+      out << "| T [degC] | allowed [% of rated] | at theta_d = " << fmt(m.deviation_angles[a_low] / units::degree)
+          << " deg [% of rated] | at theta_d = " << fmt(m.deviation_angles[a_high] / units::degree)
+          << " deg [% of rated] |\n|---|---|---|---|\n";
+      const auto &tables = valve.sweeps.table_temperatures;
+      const auto cell = [&](const DriftPoint &p) {
+        return p.null_shift_current ? fmt(100 * *p.null_shift_current / rated, 3) : std::string("n/a");
+      };
+      for (std::size_t k = 0; k < m.temperatures.size(); ++k)
+        if (std::find(tables.begin(), tables.end(), m.temperatures[k]) != tables.end())
+          out << "| " << fmt(m.temperatures[k]) << " | " << fmt(100 * t.null_shift_limit(m.temperatures[k], T0), 3)
+              << " | " << cell(m.at(k, a_low)) << " | " << cell(m.at(k, a_high)) << " |\n";
+      out << "\nEvery drift temperature: `system/drift_map.csv`; plot `null_shift_current_lines` with the spec's "
+             "band.\n\n";
+    }
   } // namespace
 
   void write_report(const ValveDescription &valve, const SystemResults &r, const PlotFiles &plots, const std::string &path)
@@ -250,13 +295,16 @@ namespace servodrift::system
       out << "- table " << p << "\n";
     for (const auto &w : r.warnings)
       out << "- **warning**: " << w << "\n";
+    for (const auto &n : r.notes)
+      out << "- note: " << n << "\n";
     out << "\nmodel.md columns are the values of the built-in valve RV-1 (model.md section 2 and clarifications C1-C3); "
            "they apply to this run only if its valve is RV-1.\n\n";
 
     out << "## Stage coefficients\n\n";
     stage_table(out, r);
     out << "Every temperature: `system/stage_coefficients.csv`. Fits (E25-E28 and full polynomials): "
-           "`tables/fits.json`; E28 here: K_f(T) with R^2 = "
+           "`tables/fits.json`; E28 here: K_f(T) over the paper's 40-120 degC (where the drift temperatures reach "
+           "it) with R^2 = "
         << fmt(r.flow_force_fit.r_squared, 6) << ".\n\n";
 
     out << "## Operating points\n\n";
@@ -265,6 +313,7 @@ namespace servodrift::system
     out << "## Drift maps\n\n";
     drift_section(out, valve, r.drift_map);
     out << "Every point: `system/drift_map.csv`.\n\n";
+    null_shift_against_spec(out, valve, r.drift_map);
 
     if (r.dynamics)
       dynamics_section(out, valve, *r.dynamics);

@@ -214,7 +214,9 @@ namespace servodrift::system
     r.quantities = t.active();
     r.temperatures = valve.sweeps.drift_temperatures;
     r.rated_current = valve.operating.rated_current;
-    r.spec = t.null_shift_spec;
+    r.spec_text = t.null_shift_spec_text(valve.operating.reference_temperature);
+    for (double T : r.temperatures)
+      r.limits.push_back(t.null_shift_limit(T, valve.operating.reference_temperature));
     r.confidence_level = t.confidence_level;
     const std::size_t n_T = r.temperatures.size();
 
@@ -231,9 +233,10 @@ namespace servodrift::system
       {
         r.valves.push_back(unpack(v, n_T));
         const ThermalNullShift &valve_result = r.valves.back();
-        const bool pass =
-          !(valve_result.flags & (ThermalNullShift::null_beyond_table | ThermalNullShift::outside_tables)) &&
-          valve_result.maximum_null_shift <= r.spec * r.rated_current;
+        bool pass = !(valve_result.flags & (ThermalNullShift::null_beyond_table | ThermalNullShift::outside_tables));
+        for (std::size_t k = 0; k < n_T; ++k)
+          pass = pass && t.within_null_shift_spec(valve_result.null_shift_current[k], r.temperatures[k], r.rated_current,
+                                                  valve.operating.reference_temperature);
         r.pass.push_back(pass);
         r.passes += pass;
         if (valve_result.flags & ThermalNullShift::outside_tables && r.outside_tables++ == 0)

@@ -38,7 +38,8 @@ namespace servodrift::system
     std::vector<std::size_t> quantities;    ///< the active quantities (ToleranceParameters::quantities())
     std::vector<double> temperatures;       ///< drift temperatures [degC]
     double rated_current;                   ///< [A]
-    double spec;                            ///< allowed max |null-shift current| / rated [1]
+    std::string spec_text;                  ///< the null-shift spec in words
+    std::vector<double> limits;             ///< allowed |null-shift current| / rated at each temperature [1]
     SampleRows inputs;                      ///< deviations of each valve (SI)
     std::vector<ThermalNullShift> valves;   ///< their thermal null shifts
     std::vector<bool> pass;                 ///< within the spec at every temperature

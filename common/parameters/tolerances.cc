@@ -23,9 +23,19 @@ namespace servodrift
                       "Seed of every random draw (samples, bootstrap): the same seed gives the same "
                       "results on any number of MPI ranks. [1]");
     prm.declare_entry("Null-shift spec", "2", Patterns::Double(0, 100),
-                      "Allowed |null-shift current| over the drift temperatures, relative to the "
-                      "reference temperature, in % of the rated current; must be > 0. Catalogues quote "
-                      "about 2 % per 55 K. [%]");
+                      "The null-shift spec in % of the rated current, > 0: with `Null-shift spec form' = "
+                      "per-55K the allowed |null-shift current| grows by this much per 55 K from the "
+                      "reference temperature, as catalogues quote it (typically 2 % per 55 K); with "
+                      "constant, it is allowed at every drift temperature. [%]");
+    prm.declare_entry("Null-shift spec form", "per-55K", Patterns::Selection("per-55K|constant|table"),
+                      "How the allowed |null-shift current| depends on the temperature: per-55K, "
+                      "`Null-shift spec' x |T - T0|/55 K; constant, `Null-shift spec'; table, `Null-shift "
+                      "spec table'. The report and the tolerance study's yield hold the null shift against "
+                      "it at every drift temperature. [-]");
+    prm.declare_entry("Null-shift spec table", "-55: 4, 40: 0.5, 135: 4", Patterns::Anything(),
+                      "With `Null-shift spec form' = table: `T: allowed' pairs, T in degC strictly "
+                      "increasing and covering the drift temperatures, allowed |null-shift current| in % of "
+                      "the rated current (>= 0), interpolated linearly in T. [degC: %]");
     prm.declare_entry("Sobol base samples", "512", Patterns::Integer(0, 1000000),
                       "N of the Sobol' design (N (d + 2) valves for d toleranced quantities): 0 (no "
                       "sensitivity study) or at least 64. [1]");

@@ -30,7 +30,20 @@ namespace servodrift
     enum class Sampling { monte_carlo, latin_hypercube, randomised_sobol_sequence };
     Sampling sampling;
     unsigned int seed;             ///< of every random draw: same seed, same results [1]
-    double null_shift_spec;        ///< allowed |null-shift current| / rated current over the range [1]
+    double null_shift_spec;        ///< the spec's value: allowed |null-shift current| / rated current [1]
+    /// How the allowed null shift depends on T: grows by null_shift_spec per 55 K from T0, is
+    /// null_shift_spec everywhere, or follows null_shift_spec_table
+    enum class SpecForm { per_55_kelvin, constant, table };
+    SpecForm null_shift_spec_form;
+    std::vector<std::pair<double, double>> null_shift_spec_table; ///< (T [degC], allowed / rated [1]), T increasing
+    /// The allowed |null-shift current| / rated current at T [degC] for a valve nulled at T0 [degC];
+    /// the table is interpolated linearly and held beyond its ends [1]
+    double null_shift_limit(double T, double T0) const;
+    /// Whether a null-shift current i [A] at T is within the spec, for the rated current and T0; a
+    /// current below the null finder's resolution (1 nA) counts as none
+    bool within_null_shift_spec(double i, double T, double rated_current, double T0) const;
+    /// The spec in words, for reports: "2 % of rated per 55 K from 40 degC", ...
+    std::string null_shift_spec_text(double T0) const;
     unsigned int sobol_base_samples; ///< N of the Sobol design N (d + 2); 0: no Sobol study [1]
     enum class SobolEstimator { saltelli, jansen, martinez, mauntz_kucherenko };
     SobolEstimator sobol_estimator;

@@ -4,6 +4,8 @@
 #include "common/parameters/parameter_source.h"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 #include <sstream>
 
 namespace servodrift
@@ -34,6 +36,46 @@ namespace servodrift
     return a;
   }
 
+  double ToleranceParameters::null_shift_limit(double T, double T0) const
+  {
+    switch (null_shift_spec_form)
+      {
+        case SpecForm::constant: return null_shift_spec;
+        case SpecForm::per_55_kelvin: return null_shift_spec * std::abs(T - T0) / 55;
+        case SpecForm::table: break;
+      }
+    const auto &t = null_shift_spec_table;
+    if (T <= t.front().first)
+      return t.front().second;
+    if (T >= t.back().first)
+      return t.back().second;
+    const auto hi = std::upper_bound(t.begin(), t.end(), T, [](double x, const auto &p) { return x < p.first; });
+    const auto lo = hi - 1;
+    return lo->second + (hi->second - lo->second) * (T - lo->first) / (hi->first - lo->first);
+  }
+
+  bool ToleranceParameters::within_null_shift_spec(double i, double T, double rated_current, double T0) const
+  {
+    constexpr double resolution = 1e-9; // [A] of the null finder
+    return std::abs(i) <= null_shift_limit(T, T0) * rated_current + resolution;
+  }
+
+  std::string ToleranceParameters::null_shift_spec_text(double T0) const
+  {
+    const auto percent = [](double x) { return format_number(100 * x) + " %"; };
+    switch (null_shift_spec_form)
+      {
+        case SpecForm::constant: return percent(null_shift_spec) + " of rated";
+        case SpecForm::per_55_kelvin:
+          return percent(null_shift_spec) + " of rated per 55 K from " + format_number(T0) + " degC";
+        case SpecForm::table: break;
+      }
+    std::string text;
+    for (const auto &[T, limit] : null_shift_spec_table)
+      text += (text.empty() ? "" : ", ") + percent(limit) + " at " + format_number(T) + " degC";
+    return text + " of rated (linear between)";
+  }
+
   void ToleranceParameters::parse_parameters(ParameterSource &prm)
   {
     prm.enter_subsection(subsection);
@@ -44,6 +86,31 @@ namespace servodrift
                s == "randomised-sobol-sequence" ? Sampling::randomised_sobol_sequence : Sampling::monte_carlo;
     seed = prm.get_integer("Seed");
     null_shift_spec = prm.get_double("Null-shift spec") / 100;
+    const std::string form = prm.get("Null-shift spec form");
+    null_shift_spec_form = form == "constant" ? SpecForm::constant : form == "table" ? SpecForm::table : SpecForm::per_55_kelvin;
+    null_shift_spec_table.clear();
+    for (const std::string &pair : split_list(prm.get("Null-shift spec table"), ','))
+      {
+        const auto colon = pair.find(':');
+        std::size_t used_T = 0, used_limit = 0;
+        double T = 0, limit = 0;
+        try
+          {
+            if (colon == std::string::npos)
+              throw std::invalid_argument("no colon");
+            T = std::stod(trimmed(pair.substr(0, colon)), &used_T);
+            limit = std::stod(trimmed(pair.substr(colon + 1)), &used_limit);
+          }
+        catch (const std::exception &)
+          {
+            used_T = used_limit = 0;
+          }
+        if (used_T == 0 || used_T != trimmed(pair.substr(0, colon)).size() ||
+            used_limit != trimmed(pair.substr(colon + 1)).size())
+          throw InputError("`Tolerances/Null-shift spec table' has `" + trimmed(pair) +
+                           "' (allowed: `T: allowed' pairs separated by commas, T in degC, allowed in % of rated)");
+        null_shift_spec_table.emplace_back(T, limit / 100);
+      }
     sobol_base_samples = prm.get_integer("Sobol base samples");
     const std::string e = prm.get("Sobol estimator");
     sobol_estimator = e == "saltelli" ? SobolEstimator::saltelli :

@@ -56,7 +56,11 @@ TEST(ValveDescription, DefaultsAreRV1)
   EXPECT_DOUBLE_EQ(v.spool.spring_preload, 0.33); // C5
   EXPECT_EQ(v.fluid.viscosity_law, FluidParameters::ViscosityLaw::vogel); // D6
   EXPECT_EQ(v.offsets.nulling, OffsetParameters::Nulling::nulled_at_reference); // D8
-  EXPECT_EQ(v.sweeps.drift_temperatures.size(), 17u);
+  // issue 65: an aircraft valve's range, -55 to 135 degC, every 5 K; tables closer at the cold end
+  EXPECT_EQ(v.sweeps.drift_temperatures.size(), 39u);
+  EXPECT_DOUBLE_EQ(v.sweeps.drift_temperatures.front(), -55);
+  EXPECT_DOUBLE_EQ(v.sweeps.drift_temperatures.back(), 135);
+  EXPECT_EQ(v.sweeps.table_temperatures.size(), 12u);
   EXPECT_EQ(v.sweeps.deviation_angles.size(), 21u);
   EXPECT_NEAR(v.sweeps.deviation_angles.back(), 0.05 * units::degree, 1e-18);
   EXPECT_EQ(v.parameters_sha256.size(), 64u);
@@ -235,4 +239,49 @@ TEST(ValveDescription, LeanReaderRefusesBrokenFiles)
             std::string::npos);
   EXPECT_NE(refusal([&] { read_printed_valve_description("/nonexistent/parameters.prm"); }).find("cannot be read"),
             std::string::npos);
+}
+
+TEST(ValveDescription, NullShiftSpecIsABandOverTemperature)
+{
+  // `Tolerances/Null-shift spec' per 55 K (the default, as catalogues quote it): 2 % of rated at
+  // 55 K from T0 = 40 degC, 3.45 % at -55 degC and at 135 degC, none at T0 (where a null shift
+  // below the null finder's 1 nA counts as none); constant; or a table, linear between its points
+  // and held beyond them
+  const auto v = load_valve_description();
+  const auto &t = v.tolerances;
+  ASSERT_EQ(t.null_shift_spec_form, ToleranceParameters::SpecForm::per_55_kelvin);
+  EXPECT_DOUBLE_EQ(t.null_shift_limit(95, 40), 0.02);
+  EXPECT_DOUBLE_EQ(t.null_shift_limit(-15, 40), 0.02);
+  EXPECT_NEAR(t.null_shift_limit(-55, 40), 0.02 * 95 / 55, 1e-15);
+  EXPECT_TRUE(t.within_null_shift_spec(5e-10, 40, 0.02, 40));
+  EXPECT_FALSE(t.within_null_shift_spec(1e-7, 40, 0.02, 40));
+  EXPECT_TRUE(t.within_null_shift_spec(-0.02 * 0.02 * 95 / 55, -55, 0.02, 40));
+  EXPECT_EQ(t.null_shift_spec_text(40), "2 % of rated per 55 K from 40 degC");
+  const auto constant = load_valve_description("", {"Tolerances/Null-shift spec form=constant"});
+  EXPECT_DOUBLE_EQ(constant.tolerances.null_shift_limit(40, 40), 0.02);
+  const auto table = load_valve_description(
+    "", {"Tolerances/Null-shift spec form=table", "Tolerances/Null-shift spec table=-60: 4, 40: 0.5, 140: 3"});
+  EXPECT_DOUBLE_EQ(table.tolerances.null_shift_limit(-10, 40), 0.0225);
+  EXPECT_DOUBLE_EQ(table.tolerances.null_shift_limit(90, 40), 0.0175);
+  EXPECT_DOUBLE_EQ(table.tolerances.null_shift_limit(40, 40), 0.005);
+  EXPECT_NE(table.tolerances.null_shift_spec_text(40).find("4 % at -60 degC"), std::string::npos);
+}
+
+TEST(ValveDescription, RefusesANullShiftSpecTableThatIsBrokenOrShort)
+{
+  const auto refused = [](const std::string &table) {
+    return refusal([&] {
+      load_valve_description("", {"Tolerances/Null-shift spec form=table", "Tolerances/Null-shift spec table=" + table});
+    });
+  };
+  // each refusal names the entry and what is allowed
+  for (const std::string &m : {refused("-55: 4, 40 0.5, 135: 4"), refused("-55: 4, 40: x, 135: 4")})
+    {
+      EXPECT_NE(m.find("`Tolerances/Null-shift spec table'"), std::string::npos) << m;
+      EXPECT_NE(m.find("allowed: `T: allowed' pairs"), std::string::npos) << m;
+    }
+  EXPECT_NE(refused("-55: 4, -55: 3, 135: 4").find("strictly increasing"), std::string::npos);
+  EXPECT_NE(refused("-55: 4, 40: 120, 135: 4").find("allowed: 0 to 100 %"), std::string::npos);
+  EXPECT_NE(refused("0: 4, 135: 4").find("not the drift temperatures' -55 to 135 degC"), std::string::npos);
+  EXPECT_NE(refused("0: 4").find("needs at least 2"), std::string::npos);
 }
