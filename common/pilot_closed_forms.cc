@@ -103,6 +103,14 @@ namespace servodrift
     return s;
   }
 
+  double PilotClosedForms::creeping_nozzle_flow(double h, double dp, double bore_length) const
+  {
+    const double rn = 0.5 * g.nozzle_diameter, rl = 0.5 * g.land_diameter;
+    const double bore = 8 * mu * bore_length / (pi * std::pow(rn, 4)); // Hagen-Poiseuille
+    const double land = 6 * mu * std::log(rl / rn) / (pi * h * h * h);  // radial flow between discs (E22's term)
+    return dp / (bore + land);
+  }
+
   double PilotClosedForms::momentum_force(double dp, double Q) const
   {
     // E23: bore pressure on the nozzle projection plus the momentum of the jet turned radial

@@ -63,6 +63,10 @@ namespace servodrift
                                           ///< than the stage's stated factor (flow/pilot_field_stage.cc)
     constexpr double time_averaged = 5;   ///< no steady solution: the time average of a time-accurate run
                                           ///< (its spread in flow/<geometry>_time_averages.csv)
+    constexpr double field_reference = 6; ///< creeping flow (Re < 1, a cold oil) where the field value
+                                          ///< differs from the reduced-order one by more than the stage's
+                                          ///< factor: the closed forms leave their range and the field
+                                          ///< level, verified against the creeping limit, is the reference
   } // namespace flags
 
   class Table

@@ -104,7 +104,7 @@ namespace servodrift::flow
         throw InputError("flow: nozzle-flapper gap " + format_number(h) + " m must be > 0 at the field level");
       const std::map<std::string, double> parameters{
         {"rn", rn / mm},     {"rl", rl / mm},     {"h", h / mm},       {"ro", valve.pilot.field_outlet_radius * rl / mm},
-        {"rc", 2 * rn / mm}, {"lc", 2 * rn / mm}, {"lb", 4 * rn / mm}, {"le", 2 * rn / mm},
+        {"rc", 2 * rn / mm}, {"lc", 2 * rn / mm}, {"lb", nozzle_bore_length_in_radii * rn / mm}, {"le", 2 * rn / mm},
         {"res", c.resolution}};
       return FvMesh(mesh_template_all_groups({"meshes/nozzle_flapper.geo", embedded::nozzle_flapper_geo, mm, "Pilot stage"}, parameters),
                     Geometry::axisymmetric, "meshes/nozzle_flapper.geo");

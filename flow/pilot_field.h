@@ -23,6 +23,11 @@
 
 namespace servodrift::flow
 {
+  /// The nozzle case's bore, from its chamber to its exit, in bore radii: a modelling choice of the
+  /// field level (meshes/nozzle_flapper.geo's lb). Its viscous resistance matters only in creeping
+  /// flow at large gaps (a cold oil), where the flow depends on the real nozzle's bore length.
+  constexpr double nozzle_bore_length_in_radii = 4;
+
   enum class PilotGeometry
   {
     fixed_orifice, ///< meshes/fixed_orifice.geo

@@ -113,7 +113,8 @@ namespace servodrift::flow
           "2 = not converged (the table carries the reduced-order value), 4 = beyond the verified range (C_d and the "
           "reduced-order C_d differ by more than a factor " +
           format_number(verified_discharge_factor) + "), 5 = no steady solution: the time average (" + name +
-          "_time_averages.csv)");
+          "_time_averages.csv), 6 = they differ so in creeping flow (Re < " + format_number(creeping_reynolds_number) +
+          "), where the field level is the reference");
       doc.columns.insert(doc.columns.end(), {"flow_model[-]",
                      "flow_rate[m^3/s]",
                      "discharge_coefficient[1]",
@@ -135,7 +136,8 @@ namespace servodrift::flow
       for (const auto &r : records)
         {
           const bool converged =
-            r[flag] == flags::computed || r[flag] == flags::beyond_verified || r[flag] == flags::time_averaged;
+            r[flag] == flags::computed || r[flag] == flags::beyond_verified || r[flag] == flags::time_averaged ||
+            r[flag] == flags::field_reference;
           auto cell = [&](double v, bool defined = true) { return defined ? format_cell(v) : std::string(); };
           doc.rows.push_back({cell(r[temperature]), cell(r[gap], !orifice), cell(r[pressure_difference]),
                               model_name(Turbulence(int(r[model]))), cell(r[flow_rate]), cell(r[discharge_coefficient]),
@@ -175,6 +177,11 @@ namespace servodrift::flow
                 << " cases lie beyond the range where the field level was verified: their C_d differs from the "
                    "reduced-order value by more than a factor "
                 << verified_discharge_factor << " (flag 4; see flow/*_cases.csv)\n";
+    if (const std::size_t reference = count_flagged(records, flag, flags::field_reference); reference > 0)
+      std::cerr << "servodrift: note: " << reference << " of " << records.size() << " " << what
+                << " cases are creeping flows (Re < " << creeping_reynolds_number
+                << ") where the reduced-order closed forms leave their range: the field level is the reference "
+                   "there (flag 6; see flow/*_cases.csv)\n";
     if (cavitating_cases > 0)
       std::cerr << "servodrift: note: " << cavitating_cases << " of " << records.size() << " " << what
                 << " cases cavitate ("

@@ -67,6 +67,13 @@ namespace servodrift::flow
            std::abs(std::log(field_discharge / reduced_discharge)) > std::log(verified_discharge_factor);
   }
 
+  double computed_case_flag(double field_discharge, double reduced_discharge, double reynolds_number)
+  {
+    if (!beyond_verified(field_discharge, reduced_discharge))
+      return flags::computed;
+    return reynolds_number < creeping_reynolds_number ? flags::field_reference : flags::beyond_verified;
+  }
+
   double span(const ValveDescription &valve)
   {
     return valve.operating.supply_pressure - valve.operating.return_pressure;
@@ -164,9 +171,8 @@ namespace servodrift::flow
     try
       {
         record_result(record, solve_with_retry(slot, t, h, dp, start.has_value()));
-        record[flag] = beyond_verified(record[discharge_coefficient], reduced.discharge_coefficient) ?
-                         flags::beyond_verified :
-                         flags::computed;
+        record[flag] =
+          computed_case_flag(record[discharge_coefficient], reduced.discharge_coefficient, record[reynolds_number]);
         last = slot->fields();
         last_model = t;
         last_dp = dp;

@@ -96,13 +96,19 @@ namespace servodrift::system
                              valve.parameters_sha256.substr(0, 12) + "); its numbers come from that valve description");
     for (const Table *table : {&t.torque_motor, &t.spring_tube, &t.fixed_orifice, &t.nozzle_flapper})
       {
-        std::size_t not_converged = 0, beyond_verified = 0, time_averaged = 0;
+        std::size_t not_converged = 0, beyond_verified = 0, time_averaged = 0, field_reference = 0;
         for (const auto &row : table->rows)
           {
             not_converged += row.back() == flags::not_converged;
             beyond_verified += row.back() == flags::beyond_verified;
             time_averaged += row.back() == flags::time_averaged;
+            field_reference += row.back() == flags::field_reference;
           }
+        if (field_reference > 0)
+          t.notes.push_back("tables/" + table->name() + ".csv: " + std::to_string(field_reference) + " of " +
+                            std::to_string(table->rows.size()) +
+                            " rows are creeping flows where the reduced-order closed forms leave their range (flag "
+                            "6): the field level, verified against the creeping limit, is the reference there");
         if (not_converged > 0)
           t.warnings.push_back("tables/" + table->name() + ".csv: " + std::to_string(not_converged) + " of " +
                                std::to_string(table->rows.size()) +

@@ -21,6 +21,7 @@ namespace servodrift::system
     /// the pilot flows at wider bores, where the flow stage made them (`Pilot stage/Bore sensitivity')
     std::optional<Table> fixed_orifice_bore, nozzle_flapper_bore;
     std::vector<std::string> warnings; ///< e.g. a table made with other parameters
+    std::vector<std::string> notes;    ///< what the reader should know that is not wrong (flag 6 rows)
 
     /// Reads and checks the four tables from `directory'.
     static StageTables read(const std::string &directory, const ValveDescription &valve);

@@ -30,6 +30,17 @@
 
 namespace servodrift::flow
 {
+  TEST(PilotFieldChain, CreepingCasesBeyondTheClosedFormsAreTheReferenceNotUnverified)
+  {
+    // A case within verified_discharge_factor of the closed forms is computed; beyond it, a creeping
+    // one (Re < 1: RV-1's nozzle at -55 degC, 70 um, C_d 0.074 against E22's 0.147) has the field
+    // level as its reference (flag 6), any other (-40 degC, Re 3.2) lies beyond the verified range
+    // (flag 4)
+    EXPECT_EQ(computed_case_flag(0.60, 0.57, 200), flags::computed);
+    EXPECT_EQ(computed_case_flag(0.074, 0.147, 0.83), flags::field_reference);
+    EXPECT_EQ(computed_case_flag(0.145, 0.256, 3.2), flags::beyond_verified);
+  }
+
   TEST(PilotFieldChain, SSTOrificeGoesOnFromKEpsilonWhereItDivergesAlone)
   {
     using namespace case_record;
