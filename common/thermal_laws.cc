@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "common/units.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace servodrift::laws
@@ -134,5 +135,49 @@ namespace servodrift::laws
     const double d_v = expanded(s.control_diameter, alpha.spool, T, T0);
     const double d_fb = expanded(s.feedback_diameter, alpha.spool, T, T0);
     return {0.25 * units::pi * d_v * d_v, 0.25 * units::pi * d_fb * d_fb};
+  }
+
+  std::vector<LawRange> law_ranges(const FluidParameters &fluid)
+  {
+    std::vector<LawRange> ranges;
+    if (fluid.viscosity_law == FluidParameters::ViscosityLaw::vogel)
+      ranges.push_back({"oil viscosity, Vogel (E16)", fluid.minimum_temperature, fluid.maximum_temperature,
+                        "`Fluid/Minimum temperature' to `Maximum temperature'; RV-1's coefficients fit "
+                        "MIL-PRF-5606 class oil at -40, 40 and 100 degC and stay within its ceiling of "
+                        "2500 mm^2/s at -54 degC (model.md 2.8)"});
+    else
+      ranges.push_back({"oil viscosity, the paper's exponential (E14)", 40, 120, "the paper's bench [K22]"});
+    ranges.push_back({"oil density (E15) and effective bulk modulus (2.8)", -55, 150,
+                      "linear in T as mineral oils are from their pour point to 150 degC; beta_e's slope is "
+                      "assumed (model.md 2.8)"});
+    ranges.push_back({"magnet remanence (E8)", -60, 150,
+                      "AlNiCo 8's reversible coefficient, -0.02 %/K in the catalogue (model.md 2.2), over "
+                      "its rated range"});
+    ranges.push_back({"spring-tube modulus (E12)", -60, 150,
+                      "measured from -50 to 50 degC (CDA Pub. 54; model.md 1.6); a copper alloy's modulus "
+                      "stays linear in T well above a third of its Debye temperature (copper's: 343 K)"});
+    ranges.push_back({"thermal expansion (E6, E7, E13, 2.3)", -60, 150,
+                      "mean coefficients over 20-100 degC (model.md 2.3); the instantaneous coefficients of "
+                      "the valve's steels and copper alloys stay within about 10 % of them from -60 to 150 "
+                      "degC"});
+    return ranges;
+  }
+
+  std::string beyond_law_ranges(const std::vector<LawRange> &ranges, const std::vector<double> &temperatures,
+                                const std::string &entry)
+  {
+    if (temperatures.empty())
+      return {};
+    const auto [lo, hi] = std::minmax_element(temperatures.begin(), temperatures.end());
+    std::string beyond;
+    for (const LawRange &r : ranges)
+      if (*lo < r.lowest || *hi > r.highest)
+        beyond += (beyond.empty() ? "" : "; ") + r.law + " (" + format_number(r.lowest) + " to " +
+                  format_number(r.highest) + " degC: " + r.basis + ")";
+    if (beyond.empty())
+      return {};
+    return "`" + entry + "' reach " + format_number(*lo) + " to " + format_number(*hi) +
+           " degC, beyond the range its source supports of: " + beyond +
+           "; each such law is extrapolated there (doc/method.md, \"Temperature laws and their ranges\")";
   }
 } // namespace servodrift::laws

@@ -10,6 +10,9 @@
 #include "common/parameters/torque_motor.h"
 #include "common/parameters/armature.h"
 
+#include <string>
+#include <vector>
+
 namespace servodrift::laws
 {
   /// Linear thermal expansion of one dimension: L(T) = L_ref (1 + alpha (T - T_ref)) (E6, E7, E13).
@@ -108,4 +111,21 @@ namespace servodrift::laws
     double feedback_area; ///< A_fb(T) [m^2]
   };
   SpoolGeometry spool_geometry(const SpoolParameters &spool, const ThermalExpansion &alpha, double T, double T0);
+
+  /// A temperature law and the range of temperatures its source supports: beyond it the law is
+  /// extrapolated (doc/method.md, "Temperature laws and their ranges").
+  struct LawRange
+  {
+    std::string law;   ///< what it gives, and its equation
+    double lowest;     ///< [degC]
+    double highest;    ///< [degC]
+    std::string basis; ///< where the range comes from
+  };
+  /// The ranges of the laws the oil, the magnets, the spring tube and the thermal expansion follow,
+  /// with the viscosity law `Fluid/Viscosity law' selects.
+  std::vector<LawRange> law_ranges(const FluidParameters &fluid);
+  /// One sentence naming the laws whose range `temperatures' leave (lowest to highest of them), or
+  /// empty if none; `entry' names where the temperatures come from.
+  std::string beyond_law_ranges(const std::vector<LawRange> &ranges, const std::vector<double> &temperatures,
+                                const std::string &entry);
 } // namespace servodrift::laws

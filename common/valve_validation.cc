@@ -40,6 +40,7 @@ namespace servodrift
     require_increasing(d.sine_frequencies, "Dynamics/Sine frequencies");
     require_increasing(d.sine_amplitudes, "Dynamics/Sine amplitudes");
     require_increasing(d.reading_times, "Dynamics/Reading times");
+    require_increasing(d.cold_start_temperatures, "Dynamics/Cold-start temperatures");
     const auto &tm = v.torque_motor;
     if (tm.voltage_drive && !(tm.coil_resistance > 0 && tm.coil_inductance > 0))
       refuse("Torque motor/Coil inductance", "and `Torque motor/Coil resistance' must be > 0 under voltage drive "
@@ -59,7 +60,8 @@ namespace servodrift
     const double rated = op.rated_current, bias = d.bias * rated;
     const double amplitude = std::max(d.sine_amplitudes.back(), d.sine_check_amplitude) * rated;
     const double lowest = std::min({0.0, bias - amplitude}) * ratio;
-    const double highest = std::max({rated, bias + amplitude, bias + d.small_step * rated}) * ratio;
+    const double highest =
+      std::max({rated, bias + amplitude, bias + d.small_step * rated, d.cold_start_current * rated}) * ratio;
     const auto &currents = sw.motor_currents;
     if (lowest < currents.front() || highest > currents.back())
       refuse("Dynamics/Sine amplitudes",
@@ -390,6 +392,7 @@ namespace servodrift
     if (v.dynamics.enabled)
       validate_dynamics(v);
     validate_asymmetry(v);
+    validate_null_shift_spec(v); // the report holds the drift map against it too
     if (v.tolerances.enabled)
       validate_tolerances(v);
 

@@ -24,6 +24,7 @@ namespace servodrift::system
     DriftMap drift_map;
     PolynomialFit flow_force_fit;                ///< E28: K_f(T), quartic in T
     std::vector<std::string> warnings;
+    std::vector<std::string> notes; ///< the tables' notes (StageTables::notes)
     std::vector<std::string> table_producers;    ///< producer line of each table (tells the model level)
     std::optional<DynamicsResults> dynamics;     ///< when asked for (issue 23)
     std::optional<ToleranceResults> tolerances;  ///< when asked for (issue 25)

@@ -9,10 +9,12 @@ namespace servodrift
   void SweepParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection(subsection);
-    prm.declare_entry("Table temperatures", "40, 50, 60, 70, 80, 90, 100, 110, 120",
+    prm.declare_entry("Table temperatures", "-55, -45, -35, -20, 0, 20, 40, 60, 80, 100, 120, 135",
                       double_list(-273.15, 1000, 1),
                       "Temperatures at which every stage writes its coefficient table (D3); strictly "
-                      "increasing, inside the fluid's viscosity-law window. [degC]");
+                      "increasing, inside the fluid's viscosity-law window. The default spans an aircraft "
+                      "valve's range, -55 to 135 degC, closer at the cold end, where the viscosity changes "
+                      "fastest (doc/validation.md, \"Between table temperatures\"). [degC]");
     prm.declare_entry("Motor angles",
                       "-0.25, -0.15, -0.1, -0.05, 0, 0.05, 0.1, 0.15, 0.25",
                       double_list(-10, 10, 2),
@@ -54,7 +56,8 @@ namespace servodrift
                       "computed rows as fractions of p_s - p_r, strictly increasing (the table adds dp = "
                       "0); the bridge needs up to 1. [1]");
     prm.declare_entry("Drift temperatures",
-                      "40, 45, 50, 55, 60, 65, 70, 75, 80, 85, 90, 95, 100, 105, 110, 115, 120",
+                      "-55, -50, -45, -40, -35, -30, -25, -20, -15, -10, -5, 0, 5, 10, 15, 20, 25, 30, 35, 40, "
+                      "45, 50, 55, 60, 65, 70, 75, 80, 85, 90, 95, 100, 105, 110, 115, 120, 125, 130, 135",
                       double_list(-273.15, 1000, 2),
                       "Temperatures of the drift map (D9), strictly increasing, within the table "
                       "temperatures. [degC]");

@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 using namespace servodrift;
 using test::relative;
@@ -21,6 +24,50 @@ TEST(OilLaw, VogelViscosityMatchesModelTable)
   for (const auto &[T, nu] : expected)
     // printed to 3 significant digits: half a unit of the last digit is <= 0.5 % of 9.36
     EXPECT_LT(relative(oil.kinematic_viscosity(T).value * 1e6, nu), 0.006) << T << " degC";
+}
+
+TEST(OilLaw, VogelViscosityMeetsTheOilSpecificationOverTheWholeRange)
+{
+  // The limits of MIL-PRF-5606H for its class of oil (model.md 2.8): at least 13.2 mm^2/s at 40
+  // degC and 4.90 at 100 degC, at most 600 at -40 and 2500 at -54. RV-1's Vogel law gives 14.0,
+  // 5.20, 500 and 2212: inside each, and at -55 degC (2522) within 1 % of the -54 ceiling.
+  const laws::Oil oil(test::rv1().fluid, 40);
+  const auto nu = [&](double T) { return oil.kinematic_viscosity(T).value * 1e6; };
+  EXPECT_GE(nu(40), 13.2);
+  EXPECT_GE(nu(100), 4.90);
+  EXPECT_LE(nu(-40), 600);
+  EXPECT_LE(nu(-54), 2500);
+  EXPECT_LT(nu(-55), 1.01 * 2500);
+  RecordProperty("viscosity_at_minus_54_mm2_per_s", std::to_string(nu(-54)));
+  // and falls monotonically to the top of the window, where it stays positive and finite
+  for (double T = -55; T < 150; T += 1)
+    EXPECT_GT(nu(T), nu(T + 1)) << T;
+}
+
+TEST(OilLaw, LawRangesNameTheLawsATableLeaves)
+{
+  // The default range, -55 to 135 degC, and the paper's, 40-120, lie within every law's range: no
+  // warning. A table from -58 degC leaves the oil density's (-55) but not the metals' (-60); one to
+  // 160 degC leaves them all (the viscosity's window, `Fluid/Maximum temperature', also refuses
+  // it). The sentence names the entry, the span and each law with its basis.
+  const auto ranges = laws::law_ranges(test::rv1().fluid);
+  EXPECT_EQ(laws::beyond_law_ranges(ranges, {-55, 0, 135}, "Sweeps/Table temperatures"), "");
+  EXPECT_EQ(laws::beyond_law_ranges(ranges, {40, 120}, "Sweeps/Table temperatures"), "");
+  const std::string cold = laws::beyond_law_ranges(ranges, {-58, 40}, "Sweeps/Table temperatures");
+  EXPECT_NE(cold.find("`Sweeps/Table temperatures' reach -58 to 40 degC"), std::string::npos) << cold;
+  EXPECT_NE(cold.find("oil density (E15) and effective bulk modulus (2.8) (-55 to 150 degC"), std::string::npos)
+    << cold;
+  EXPECT_EQ(cold.find("spring-tube modulus"), std::string::npos) << cold;
+  const std::string hot = laws::beyond_law_ranges(ranges, {40, 160}, "x");
+  for (const char *law : {"Vogel", "density", "remanence", "spring-tube modulus", "thermal expansion"})
+    EXPECT_NE(hot.find(law), std::string::npos) << law << ": " << hot;
+  // every law's range is stated in doc/method.md, as the code has it
+  std::ifstream method(std::string(SERVODRIFT_SOURCE_DIR) + "/doc/method.md");
+  const std::string doc((std::istreambuf_iterator<char>(method)), std::istreambuf_iterator<char>());
+  for (const auto &r : ranges)
+    EXPECT_NE(doc.find("| " + r.law + " | " + format_number(r.lowest) + " to " + format_number(r.highest) + " |"),
+              std::string::npos)
+      << r.law;
 }
 
 TEST(OilLaw, ViscosityDerivativeIsConsistent)

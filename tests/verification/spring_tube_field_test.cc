@@ -251,7 +251,7 @@ TEST(SpringTubeField, StageWritesTheTableAndTheFields)
 {
   // `servodrift structure' at the field level: the spring_tube table (Foundation schema), the field
   // summary and one VTU per temperature with a PVD collection.
-  const auto v = field_valve({"Sweeps/Table temperatures=40, 120"});
+  const auto v = field_valve({"Sweeps/Table temperatures=40, 120", "Sweeps/Drift temperatures=40, 120"});
   const Table table = compute_spring_tube_table(v);
   ASSERT_EQ(table.rows.size(), 2u);
   EXPECT_LT(relative(table.rows[0][1], spring_tube_field(v, 40)->rotational_stiffness()), 1e-12);

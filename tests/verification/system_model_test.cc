@@ -242,7 +242,8 @@ TEST(DriftMap, PaperPresetFlowForceFollowsThePaperTable)
 {
   // D2: with the paper-table flapper force, the system model's K_f(T) at null is the paper's
   // (section 3 item 10), up to the tables' interpolation (PCHIP in T, gap and dp): 1 %.
-  const Valve paper({"Pilot stage/Flapper force law=paper-table"});
+  const Valve paper({"Pilot stage/Flapper force law=paper-table", "Sweeps/Table temperatures=40, 50, 60, 70, 80, 90, 100, 110, 120",
+                     "Sweeps/Drift temperatures=40, 120"});
   const double expected[] = {57.5e3, 29.5e3, 15.2e3, 21.0e3, 25.5e3, 28.9e3, 31.4e3, 33.2e3, 34.5e3};
   for (int k = 0; k < 9; ++k)
     EXPECT_LT(relative(paper.model.flow_force_stiffness(40 + 10 * k), expected[k]), 0.01) << 40 + 10 * k;
@@ -312,4 +313,42 @@ TEST(ModelForm, SpreadOfAlternativeTables)
       EXPECT_NEAR(stronger.flow_force_stiffness / d.flow_force_stiffness, 1.1, 1e-6);
       EXPECT_NEAR(stronger.nozzle_discharge, d.nozzle_discharge, 1e-12);
     }
+}
+
+TEST(DriftMap, BetweenTableTemperaturesAsFromTablesEvery5K)
+{
+  // The drift map interpolates the stage tables in T (PCHIP). With the default table temperatures
+  // (12 from -55 to 135 degC, closer at the cold end) against tables every 5 K, at each of the 39
+  // drift temperatures and every deviation angle: the null-shift current within 1e-3 % of rated,
+  // the brake pressure at the rated current within 1 % of p_s - p_r and the spool displacement at
+  // i = 0 within 1 % of its stroke. The largest differences are recorded (doc/validation.md,
+  // "Between table temperatures").
+  const std::string every_5K = "-55, -50, -45, -40, -35, -30, -25, -20, -15, -10, -5, 0, 5, 10, 15, 20, 25, 30, 35, "
+                               "40, 45, 50, 55, 60, 65, 70, 75, 80, 85, 90, 95, 100, 105, 110, 115, 120, 125, 130, 135";
+  const auto coarse = test::valve({});
+  const auto fine = test::valve({"Sweeps/Table temperatures=" + every_5K});
+  ASSERT_EQ(coarse.sweeps.drift_temperatures.size(), 39u);
+  const auto a = system::compute(coarse, test::write_reduced_order_tables(coarse)).drift_map;
+  const auto b = system::compute(fine, test::write_reduced_order_tables(fine)).drift_map;
+  ASSERT_EQ(a.points.size(), b.points.size());
+  const double rated = coarse.operating.rated_current;
+  const double span = coarse.operating.supply_pressure - coarse.operating.return_pressure;
+  const double stroke = coarse.spool.stroke_limit;
+  double shift = 0, pressure = 0, displacement = 0;
+  for (std::size_t k = 0; k < a.points.size(); ++k)
+    {
+      ASSERT_EQ(a.points[k].null_shift_current.has_value(), b.points[k].null_shift_current.has_value());
+      if (a.points[k].null_shift_current)
+        shift = std::max(shift, std::abs(*a.points[k].null_shift_current - *b.points[k].null_shift_current) / rated);
+      pressure = std::max(pressure, std::abs(a.points[k].rated_current.spool.brake_pressure -
+                                             b.points[k].rated_current.spool.brake_pressure) / span);
+      displacement = std::max(displacement, std::abs(a.points[k].zero_current.spool.displacement -
+                                                     b.points[k].zero_current.spool.displacement) / stroke);
+    }
+  RecordProperty("null_shift_difference_percent_of_rated", test::number(100 * shift));
+  RecordProperty("brake_pressure_difference_percent_of_span", test::number(100 * pressure));
+  RecordProperty("spool_displacement_difference_percent_of_stroke", test::number(100 * displacement));
+  EXPECT_LT(shift, 1e-5);
+  EXPECT_LT(pressure, 0.01);
+  EXPECT_LT(displacement, 0.01);
 }
