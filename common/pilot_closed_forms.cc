@@ -103,12 +103,29 @@ namespace servodrift
     return s;
   }
 
-  double PilotClosedForms::creeping_nozzle_flow(double h, double dp, double bore_length) const
+  OrificeState PilotClosedForms::creeping_fixed_orifice(double dp) const
   {
+    OrificeState s;
+    const double D0 = g.fixed_orifice_diameter, A0 = 0.25 * pi * D0 * D0;
+    const double ideal_velocity = std::sqrt(2 * dp / rho);
+    s.reynolds_number = D0 * ideal_velocity / nu; // E17
+    s.discharge_coefficient = s.reynolds_number / (4 * pi * (3 + 16 * g.fixed_orifice_length / (pi * D0)));
+    s.flow_rate = s.discharge_coefficient * A0 * ideal_velocity;
+    return s;
+  }
+
+  OrificeState PilotClosedForms::creeping_nozzle(double h, double dp, double bore_length) const
+  {
+    OrificeState s;
     const double rn = 0.5 * g.nozzle_diameter, rl = 0.5 * g.land_diameter;
     const double bore = 8 * mu * bore_length / (pi * std::pow(rn, 4)); // Hagen-Poiseuille
     const double land = 6 * mu * std::log(rl / rn) / (pi * h * h * h);  // radial flow between discs (E22's term)
-    return dp / (bore + land);
+    s.flow_rate = dp / (bore + land);
+    const double ideal_velocity = std::sqrt(2 * dp / rho);
+    s.discharge_coefficient = s.flow_rate / (pi * g.nozzle_diameter * h * ideal_velocity); // on the curtain
+    const double D_h = 2 * pi * g.nozzle_diameter * h / (pi * g.nozzle_diameter + h); // E18
+    s.reynolds_number = D_h * s.discharge_coefficient * ideal_velocity / nu;
+    return s;
   }
 
   double PilotClosedForms::momentum_force(double dp, double Q) const

@@ -29,12 +29,20 @@ namespace servodrift
     /// Nozzle-flapper gap h >= 0 [m] at dp = p_c - p_r >= 0 [Pa].
     OrificeState nozzle(double gap, double pressure_difference) const;
 
+    /// Creeping (Stokes) flow through the fixed orifice: Sampson's flow through a hole in a thin
+    /// wall and the bore's Poiseuille flow in series, dp = mu Q (3 + 8 l/(pi r))/r^3 (Dagan,
+    /// Weinbaum and Pfeffer 1982; numerical creeping flows through short pores lie within about 6 %
+    /// of it); in E21's terms C_d = Re/(4 pi (3 + 16 l/(pi D))) with Re on the ideal velocity (E17).
+    /// The limit of the orifice's flow for Re -> 0.
+    OrificeState creeping_fixed_orifice(double pressure_difference) const;
+
     /// Creeping (Stokes) flow through the nozzle bore of length `bore_length' and the gap h at dp:
     /// the bore's Poiseuille resistance 8 mu l_b/(pi r_N^4) in series with the land's radial flow
-    /// 6 mu ln(r_land/r_N)/(pi h^3) (lubrication) [m^3/s]. The end effects at the bore's entry and
-    /// at the land's edges are left out: it is the limit of the real flow for Re -> 0 and h/r_N -> 0,
-    /// the reference of the field level at the cold end (issue 65). E22 has the land's term only.
-    double creeping_nozzle_flow(double gap, double pressure_difference, double bore_length) const;
+    /// 6 mu ln(r_land/r_N)/(pi h^3) (lubrication), C_dn on the curtain as E22's. The end effects at
+    /// the bore's entry and at the land's edges are left out: the limit of the real flow for Re -> 0
+    /// and h/r_N -> 0, the reference of the field level at the cold end (issue 65). E22 has the
+    /// land's term only.
+    OrificeState creeping_nozzle(double gap, double pressure_difference, double bore_length) const;
 
     /// E23: force of a jet of flow Q from a bore at dp = p_c - p_r on the flapper: the bore pressure
     /// on the nozzle's projection plus the momentum of the jet turned radial (times the paper-table

@@ -179,9 +179,8 @@ namespace servodrift::flow
                 << verified_discharge_factor << " (flag 4; see flow/*_cases.csv)\n";
     if (const std::size_t reference = count_flagged(records, flag, flags::field_reference); reference > 0)
       std::cerr << "servodrift: note: " << reference << " of " << records.size() << " " << what
-                << " cases are creeping flows (Re < " << creeping_reynolds_number
-                << ") where the reduced-order closed forms leave their range: the field level is the reference "
-                   "there (flag 6; see flow/*_cases.csv)\n";
+                << " cases are creeping flows where the reduced-order closed forms leave their range: the field "
+                   "level is the reference there (flag 6; see flow/*_cases.csv)\n";
     if (cavitating_cases > 0)
       std::cerr << "servodrift: note: " << cavitating_cases << " of " << records.size() << " " << what
                 << " cases cavitate ("

@@ -271,7 +271,11 @@ namespace servodrift::system
           << " deg [% of rated] |\n|---|---|---|---|\n";
       const auto &tables = valve.sweeps.table_temperatures;
       const auto cell = [&](const DriftPoint &p) {
-        return p.null_shift_current ? fmt(100 * *p.null_shift_current / rated, 3) : std::string("n/a");
+        if (!p.null_shift_current)
+          return std::string("n/a");
+        // below 1 nA the null-shift current is zero up to the root finder's tolerance
+        const double i = std::abs(*p.null_shift_current) > 1e-9 ? *p.null_shift_current : 0.0;
+        return fmt(100 * i / rated, 3);
       };
       for (std::size_t k = 0; k < m.temperatures.size(); ++k)
         if (std::find(tables.begin(), tables.end(), m.temperatures[k]) != tables.end())

@@ -32,13 +32,14 @@ namespace servodrift::flow
 {
   TEST(PilotFieldChain, CreepingCasesBeyondTheClosedFormsAreTheReferenceNotUnverified)
   {
-    // A case within verified_discharge_factor of the closed forms is computed; beyond it, a creeping
-    // one (Re < 1: RV-1's nozzle at -55 degC, 70 um, C_d 0.074 against E22's 0.147) has the field
-    // level as its reference (flag 6), any other (-40 degC, Re 3.2) lies beyond the verified range
-    // (flag 4)
+    // A case within verified_discharge_factor of E21/E22 is computed. Beyond it the field level is
+    // the reference (flag 6) where the flow is creeping, Re < 10 (RV-1's nozzle at -55 degC, 70 um,
+    // C_d 0.074 against E22's 0.147; the orifice at -55 degC, 1 MPa, Re 4.3: 0.0240 against E21's
+    // 0.0341); otherwise it lies beyond the verified range (flag 4).
     EXPECT_EQ(computed_case_flag(0.60, 0.57, 200), flags::computed);
     EXPECT_EQ(computed_case_flag(0.074, 0.147, 0.83), flags::field_reference);
-    EXPECT_EQ(computed_case_flag(0.145, 0.256, 3.2), flags::beyond_verified);
+    EXPECT_EQ(computed_case_flag(0.0240, 0.0341, 4.27), flags::field_reference);
+    EXPECT_EQ(computed_case_flag(0.30, 0.45, 40), flags::beyond_verified);
   }
 
   TEST(PilotFieldChain, SSTOrificeGoesOnFromKEpsilonWhereItDivergesAlone)
