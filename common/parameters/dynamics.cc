@@ -52,11 +52,11 @@ namespace servodrift
                       "drift temperature; the study is the dynamics' costliest part (doc/performance.md). "
                       "[1]");
     prm.declare_entry("Cold-start temperatures", "-55, -40, -20, 40", double_list(-273.15, 1000, 0),
-                      "Temperatures of the cold-soak start: the valve at that temperature throughout and at "
-                      "rest (every pressure at return), supply and `Cold-start current' applied at t = 0; "
-                      "the report gives the time until p_B stays within 2 % of its final value and its "
-                      "overshoot. Strictly increasing; one beyond the table temperatures is skipped, and "
-                      "the report says so (the default suits the default tables); empty for none. [degC]");
+                      "Temperatures of the cold-soak start: the valve at rest at that temperature (every "
+                      "pressure at return), supply and `Cold-start current' applied at t = 0; the report "
+                      "gives the time until p_B stays within 2 % of its final value and its overshoot. "
+                      "Strictly increasing; one beyond the table temperatures is skipped and named in the "
+                      "report; empty for none. [degC]");
     prm.declare_entry("Cold-start current", "1", Patterns::Double(0, 100),
                       "Command of the cold-soak start as a fraction of the rated current (1: the brake "
                       "applied fully). [1]");
