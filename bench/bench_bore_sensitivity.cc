@@ -12,6 +12,7 @@
 //   build/bench/bench_bore_sensitivity [field|reduced-order] [delta, m] [output directory]
 // Writes <output>/bore_sensitivity.csv; a field run takes five flow sweeps of 3 temperatures (about
 // 25 min on 2 ranks); tables left in <output> by an earlier run of the same descriptions are reused.
+#include "bench/benchmarks.h"
 #include "common/output_files.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
@@ -64,7 +65,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_bore_sensitivity(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string level = argc > 1 ? argv[1] : "field";
@@ -142,4 +143,5 @@ int main(int argc, char **argv)
       std::cout << csv.str();
       std::ofstream(out + "/bore_sensitivity.csv") << csv.str();
     }
+  return 0;
 }

@@ -3,6 +3,7 @@
 // model from known parameters with Gaussian noise), from RV-1's reduced-order tables, one core.
 // Target: under 5 s. Not a test: it prints wall times and what the fit found.
 //   build/bench/bench_calibration [repetitions]
+#include "bench/benchmarks.h"
 #include "bench/time_it.h"
 #include "common/stage_output.h"
 #include "flow/pilot_stage.h"
@@ -23,7 +24,7 @@
 using namespace servodrift;
 using servodrift::bench::time_it;
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_calibration(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const int repetitions = argc > 1 ? std::atoi(argv[1]) : 3;

@@ -10,6 +10,7 @@
 // reason on stderr), the iterations, the wall time, C_d and the flapper force. Not a test (minutes).
 //   OMP_THREAD_LIMIT=1 build/bench/bench_cold_start [case numbers, default all, e.g. 1,4,7] [parameter=value ...]
 // (extra arguments are `--set' entries, e.g. 'Flow solver/Report interval=100' for the residual history)
+#include "bench/benchmarks.h"
 #include "common/valve_description.h"
 #include "flow/pilot_field.h"
 #include "flow/pilot_field_cases.h"
@@ -75,7 +76,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_cold_start(int argc, char **argv)
 {
   constexpr auto nozzle = PilotGeometry::nozzle_flapper;
   constexpr auto orifice = PilotGeometry::fixed_orifice;
@@ -191,4 +192,5 @@ int main(int argc, char **argv)
                     r[discharge_coefficient], r[flapper_force]);
       std::fflush(stdout);
     }
+  return 0;
 }

@@ -2,6 +2,7 @@
 // reduced-order tables of RV-1, and the whole system stage without plots. Not a test: it prints
 // wall times (minimum and median of several repetitions).
 //   build/bench/bench_drift_map [repetitions]
+#include "bench/benchmarks.h"
 #include "bench/time_it.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
@@ -23,7 +24,7 @@ using namespace servodrift;
 
 using servodrift::bench::time_it;
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_drift_map(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const int repetitions = argc > 1 ? std::atoi(argv[1]) : 5;

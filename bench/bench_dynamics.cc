@@ -7,6 +7,7 @@
 //   4. the whole dynamics stage (every analysis of `servodrift run'), for the record.
 // Not a test: it prints wall times (minimum and median of the repetitions).
 //   build/bench/bench_dynamics [repetitions]          (or under mpirun -np 2)
+#include "bench/benchmarks.h"
 #include "bench/time_it.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
@@ -28,7 +29,7 @@ using namespace servodrift::system;
 
 using servodrift::bench::time_it;
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_dynamics(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const int repetitions = argc > 1 ? std::atoi(argv[1]) : 3;

@@ -4,6 +4,7 @@
 // pressure-velocity iterations and two velocity relaxations on the 20-thousand-cell mesh. Prints
 // cells, outer iterations, wall time, time per iteration and the pressure-drop error. Not a test.
 //   OMP_THREAD_LIMIT=1 build/bench/bench_flow [repetitions] [largest cells in thousands: 5|20|80] [compare: 1|0|2]
+#include "bench/benchmarks.h"
 #include "common/gmsh_mesh.h"
 #include "common/output_files.h"
 #include "common/valve_description.h"
@@ -43,7 +44,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_flow(int argc, char **argv)
 {
   const int repetitions = argc > 1 ? std::atoi(argv[1]) : 3;
   const int largest = argc > 2 ? std::atoi(argv[2]) : 80;

@@ -4,6 +4,7 @@
 //   OMP_THREAD_LIMIT=1 build/bench/bench_magnetics [repetitions]
 // The default sweep (9 x 9 x 5 cases) is timed with the command itself:
 //   time mpirun -np 2 build/servodrift magnetics -o /tmp/bench
+#include "bench/benchmarks.h"
 #include "common/units.h"
 #include "common/valve_description.h"
 #include "magnetics/torque_motor_field.h"
@@ -17,7 +18,7 @@
 
 using namespace servodrift;
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_magnetics(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const int repetitions = argc > 1 ? std::atoi(argv[1]) : 3;

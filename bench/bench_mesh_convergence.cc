@@ -5,6 +5,7 @@
 // three (h = 1/resolution, the observed order p from the three values, bounded to [0.5, 4]) gives
 // the mesh-converged value and the default mesh's error. Not a test.
 //   OMP_THREAD_LIMIT=1 build/bench/bench_mesh_convergence [gaps in um, default 10,40,70] [cavitation: 0|1|both]
+#include "bench/benchmarks.h"
 #include "common/valve_description.h"
 #include "flow/pilot_field.h"
 
@@ -44,7 +45,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_mesh_convergence(int argc, char **argv)
 {
   std::vector<double> gaps{10e-6, 40e-6, 70e-6};
   if (argc > 1)
@@ -111,4 +112,5 @@ int main(int argc, char **argv)
                     100 * (F[1] / F0 - 1));
         std::fflush(stdout);
       }
+  return 0;
 }

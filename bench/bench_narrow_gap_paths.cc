@@ -13,6 +13,7 @@
 // "Robustness"). Not a test (tens of seconds).
 //   OMP_THREAD_LIMIT=1 build/bench/bench_narrow_gap_paths [T degC] [gap m] [dp Pa] [neighbour gap m] [parameter=value ...]
 // (defaults 50 degC, 10e-6 m, 3.09e6 Pa, 20e-6 m)
+#include "bench/benchmarks.h"
 #include "common/valve_description.h"
 #include "flow/pilot_field.h"
 #include "flow/pilot_field_cases.h"
@@ -68,7 +69,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_narrow_gap_paths(int argc, char **argv)
 {
   const double T = argc > 1 ? std::atof(argv[1]) : 50, h = argc > 2 ? std::atof(argv[2]) : 10e-6;
   const double dp = argc > 3 ? std::atof(argv[3]) : 3.09e6, neighbour = argc > 4 ? std::atof(argv[4]) : 20e-6;
@@ -114,4 +115,5 @@ int main(int argc, char **argv)
     if (chain.last_fields())
       march("descending", valve, T, h, dp, *chain.last_fields());
   }
+  return 0;
 }

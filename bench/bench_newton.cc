@@ -5,6 +5,7 @@
 // of residuals, Jacobians and factorisations, the flow rate and the largest field differences. Last,
 // Newton-PTC from rest (fields zero, dp applied at once) at three first CFL numbers.
 //   OMP_THREAD_LIMIT=1 build/bench/bench_newton [nozzle|orifice] [temperature degC] [dp Pa] [ratio] [CFL_0]
+#include "bench/benchmarks.h"
 #include "common/valve_description.h"
 #include "flow/pilot_field.h"
 #include "flow/simplec.h"
@@ -26,7 +27,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_newton(int argc, char **argv)
 {
   const std::string which = argc > 1 ? argv[1] : "nozzle";
   const double T = argc > 2 ? std::atof(argv[2]) : 40;
@@ -100,4 +101,5 @@ int main(int argc, char **argv)
                   cfl, to_string(q.outcome).c_str(), q.steps, q.jacobians, seconds_since(t0), q.norm,
                   rest.solver().flow_rate("outlet") / a.flow_rate("outlet") - 1);
     }
+  return 0;
 }

@@ -7,6 +7,7 @@
 // 2026-11-28). Not a test.
 //   OMP_THREAD_LIMIT=1 build/bench/bench_nozzle_chain <temperature [degC]> <gap [um]> [parameter=value ...]
 // (extra arguments are `--set' entries, e.g. 'Flow solver/Report interval=50' for the residuals)
+#include "bench/benchmarks.h"
 #include "common/valve_description.h"
 #include "flow/pilot_field_cases.h"
 
@@ -20,7 +21,7 @@
 using namespace servodrift;
 using namespace servodrift::flow;
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_nozzle_chain(int argc, char **argv)
 {
   if (argc < 3)
     {

@@ -8,6 +8,7 @@
 // changed state within it, and the liquid cell of largest mass imbalance by the solver's own
 // measure: where, its neighbours' state) and the time average. Not a test (minutes).
 //   OMP_THREAD_LIMIT=1 build/bench/bench_orifice_march [T degC, default 100] [parameter=value ...]
+#include "bench/benchmarks.h"
 #include "common/valve_description.h"
 #include "flow/cavitation_model.h"
 #include "flow/continuity.h"
@@ -59,7 +60,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_orifice_march(int argc, char **argv)
 {
   const double T = argc > 1 ? std::atof(argv[1]) : 100;
   constexpr double dp = 15.45e6, start_dp = 1.03e6;
@@ -136,4 +137,5 @@ int main(int argc, char **argv)
               capped_steps_held_by(a).c_str(), a.decorrelation_steps,
               steps_converged(a) && window_spans_motion(a) ? "the chain's gate passes it" : "the chain's gate refuses it",
               seconds);
+  return 0;
 }

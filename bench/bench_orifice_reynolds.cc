@@ -6,6 +6,7 @@
 // (data for scripts/orifice-reynolds, which plots doc/figures/orifice_lichtarowicz.*) with the
 // iterations and wall time of each case.
 //   OMP_THREAD_LIMIT=1 build/bench/bench_orifice_reynolds [parameter=value ...]
+#include "bench/benchmarks.h"
 #include "common/valve_description.h"
 #include "common/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
@@ -19,7 +20,7 @@
 using namespace servodrift;
 using namespace servodrift::flow;
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_orifice_reynolds(int argc, char **argv)
 {
   std::vector<std::string> settings{"Output/Progress=none", "Pilot stage/Field cavitation=false"};
   for (int a = 1; a < argc; ++a)
@@ -74,4 +75,5 @@ int main(int argc, char **argv)
         }
       std::fflush(stdout);
     }
+  return 0;
 }

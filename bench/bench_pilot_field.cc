@@ -9,6 +9,7 @@
 //   OMP_THREAD_LIMIT=1 build/bench/bench_pilot_field [resolutions, default 1,2] [parameter=value ...]
 // (extra arguments are `--set' entries, e.g. 'Flow solver/Report interval=100' for the residual
 // history, 'Flow solver/Turbulence model=k-epsilon' for one model only)
+#include "bench/benchmarks.h"
 #include "common/valve_description.h"
 #include "flow/pilot_field.h"
 
@@ -21,7 +22,7 @@
 using namespace servodrift;
 using namespace servodrift::flow;
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_pilot_field(int argc, char **argv)
 {
   std::vector<double> resolutions;
   for (std::string list = argc > 1 ? argv[1] : "1,2"; !list.empty();)
@@ -75,4 +76,5 @@ int main(int argc, char **argv)
           }
         std::fflush(stdout);
       }
+  return 0;
 }

@@ -4,6 +4,7 @@
 //   OMP_THREAD_LIMIT=1 build/bench/bench_structure [repetitions]
 // The default sweep (9 temperatures, with the VTU files) is timed with the command itself:
 //   time build/servodrift structure -o /tmp/bench
+#include "bench/benchmarks.h"
 #include "common/valve_description.h"
 #include "structure/spring_tube_field.h"
 #include "structure/spring_tube_stage.h"
@@ -18,7 +19,7 @@
 
 using namespace servodrift;
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_structure(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const int repetitions = argc > 1 ? std::atoi(argv[1]) : 3;

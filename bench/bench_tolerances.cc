@@ -4,6 +4,7 @@
 // (40 960 valves, null-shift current only; target: under 3 min on 2 cores). Not a test: it prints
 // wall times. Run it serially and under `mpirun -np 2' for the scaling with ranks.
 //   build/bench/bench_tolerances [repetitions]
+#include "bench/benchmarks.h"
 #include "bench/time_it.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
@@ -21,7 +22,7 @@
 using namespace servodrift;
 using servodrift::bench::time_it;
 
-int main(int argc, char **argv)
+int servodrift::bench::bench_tolerances(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const int repetitions = argc > 1 ? std::atoi(argv[1]) : 1;
