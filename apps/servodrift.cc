@@ -87,14 +87,15 @@ namespace
   /// the first stage writes (issue 24). At the reduced order the run itself is as quick.
   void check_before_field_stages(const ValveDescription &valve)
   {
-    if (valve.torque_motor.model_level != "field" && valve.spring_tube.model_level != "field" &&
-        valve.pilot.model_level != "field")
+    if (valve.torque_motor.model_level != ModelLevel::field && valve.spring_tube.model_level != ModelLevel::field &&
+        valve.pilot.model_level != ModelLevel::field)
       return;
     ValveDescription reduced = valve;
-    reduced.torque_motor.model_level = reduced.spring_tube.model_level = reduced.pilot.model_level = "reduced-order";
+    reduced.torque_motor.model_level = reduced.spring_tube.model_level = reduced.pilot.model_level =
+      ModelLevel::reduced_order;
     reduced.output.progress = OutputParameters::Progress::none;
     auto &sw = reduced.sweeps;
-    if (valve.pilot.model_level == "field") // the field tables' ranges: their rows and the added zero rows
+    if (valve.pilot.model_level == ModelLevel::field) // the field tables' ranges: their rows and the added zero rows
       {
         sw.gap_fractions = sw.field_gap_fractions;
         sw.pressure_fractions = sw.field_orifice_pressure_fractions;
@@ -305,9 +306,9 @@ namespace
       write_parameters_file(valve); // creates the output directory, or stops every rank with the reason
       if (run->parsed())
         {
-          timed("magnetics (" + valve.torque_motor.model_level + ")", [&] { magnetics::run(valve); });
-          timed("structure (" + valve.spring_tube.model_level + ")", [&] { structure::run(valve); });
-          timed("flow (" + valve.pilot.model_level + ")", [&] { flow::run(valve); });
+          timed("magnetics (" + to_string(valve.torque_motor.model_level) + ")", [&] { magnetics::run(valve); });
+          timed("structure (" + to_string(valve.spring_tube.model_level) + ")", [&] { structure::run(valve); });
+          timed("flow (" + to_string(valve.pilot.model_level) + ")", [&] { flow::run(valve); });
           const system::Analyses analyses{valve.dynamics.enabled, valve.tolerances.enabled};
           timed(system_label(analyses), [&] { system::run(valve, analyses); });
           if (valve.output.fmu)
@@ -326,11 +327,11 @@ namespace
       else
         {
           if (magnetics->parsed())
-            timed("magnetics (" + valve.torque_motor.model_level + ")", [&] { magnetics::run(valve); });
+            timed("magnetics (" + to_string(valve.torque_motor.model_level) + ")", [&] { magnetics::run(valve); });
           if (structure->parsed())
-            timed("structure (" + valve.spring_tube.model_level + ")", [&] { structure::run(valve); });
+            timed("structure (" + to_string(valve.spring_tube.model_level) + ")", [&] { structure::run(valve); });
           if (flow->parsed())
-            timed("flow (" + valve.pilot.model_level + ")", [&] { flow::run(valve); });
+            timed("flow (" + to_string(valve.pilot.model_level) + ")", [&] { flow::run(valve); });
           write_fits(valve);
           say("results: " + tables_directory(valve) + "/");
         }

@@ -107,7 +107,9 @@ namespace servodrift
                                ParameterFormat format);
 
   /// Checks that go beyond one entry's range (p_r < p_s, d < D, x0 <= D_N/4, positive torque-motor
-  /// gaps at every temperature, temperatures inside the oil law's window, ...). Throws InputError.
+  /// gaps at every temperature, temperatures inside the oil law's window, ...): the structs' validate
+  /// members (common/parameters/*_validation.cc) in a fixed order, and the functions below. Throws
+  /// InputError for the first fault.
   void validate(const ValveDescription &valve);
   /// The checks of a whole run (`servodrift run'): the tables the stages will make must cover what
   /// the system model asks of them (the pilot tables the whole pressure span). A stage run alone

@@ -81,7 +81,7 @@ namespace servodrift::flow
       using Choice = PilotStageParameters::BoreSensitivity;
       if (valve.pilot.bore_sensitivity != Choice::automatic)
         return valve.pilot.bore_sensitivity == Choice::on;
-      if (valve.pilot.model_level != "field")
+      if (valve.pilot.model_level != ModelLevel::field)
         return false;
       const auto &a = valve.asymmetry;
       if (a.left.orifice_diameter != 0 || a.right.orifice_diameter != 0 || a.left.nozzle_diameter != 0 ||
@@ -130,7 +130,7 @@ namespace servodrift::flow
       // and another path can land on another cavitating state (doc/method.md)
       s.field_gap_fractions = nearest(valve.sweeps.field_gap_fractions, {0.75, 1, 1.25});
       s.field_nozzle_pressure_fractions = nearest(valve.sweeps.field_nozzle_pressure_fractions, {0.5, 1});
-      const PilotTables at = valve.pilot.model_level == "field" ? compute_pilot_field_tables(wider, ".bore") :
+      const PilotTables at = valve.pilot.model_level == ModelLevel::field ? compute_pilot_field_tables(wider, ".bore") :
                                                                   compute_pilot_tables(wider);
       const auto ratios = [&](const Table &nominal_table, const Table &wider_table, const TableSchema &schema) {
         const std::size_t axes = nominal_table.schema().n_axes, flag = nominal_table.rows.front().size() - 1;
@@ -186,14 +186,14 @@ namespace servodrift::flow
 
   PilotTables compute_pilot_tables(const ValveDescription &valve)
   {
-    if (valve.pilot.model_level == "field")
+    if (valve.pilot.model_level == ModelLevel::field)
       return compute_pilot_field_tables(valve);
     return {compute_fixed_orifice_table(valve), compute_nozzle_flapper_table(valve)};
   }
 
   void run(const ValveDescription &valve)
   {
-    const std::string producer = "flow/" + valve.pilot.model_level;
+    const std::string producer = "flow/" + to_string(valve.pilot.model_level);
     PilotTables tables = compute_pilot_tables(valve);
     write_table(valve, tables.fixed_orifice, producer);
     write_table(valve, tables.nozzle_flapper, producer);

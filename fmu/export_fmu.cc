@@ -155,8 +155,9 @@ namespace servodrift::fmu
                << "parameters-sha256 " << valve.parameters_sha256 << "\n"
                << "producer " << producer_string("export-fmu") << "\n"
                << "valve " << valve.source << "\n"
-               << "model-levels torque_motor=" << valve.torque_motor.model_level
-               << " spring_tube=" << valve.spring_tube.model_level << " pilot_stage=" << valve.pilot.model_level << "\n"
+               << "model-levels torque_motor=" << to_string(valve.torque_motor.model_level)
+               << " spring_tube=" << to_string(valve.spring_tube.model_level)
+               << " pilot_stage=" << to_string(valve.pilot.model_level) << "\n"
                << "mesh-resolutions torque_motor=" << format_cell(valve.torque_motor.field_mesh_resolution)
                << " spring_tube=" << format_cell(valve.spring_tube.field_mesh_resolution)
                << " pilot_stage=" << format_cell(valve.pilot.field_resolution) << "\n"
@@ -168,7 +169,7 @@ namespace servodrift::fmu
     ModelDescriptionInfo info;
     info.guid = guid;
     info.description = "double-nozzle-flapper pressure servo valve of " + valve.source + ", tables from " +
-                       valve.pilot.model_level + " pilot stage, " + format_cell(e.lowest_temperature) + " to " +
+                       to_string(valve.pilot.model_level) + " pilot stage, " + format_cell(e.lowest_temperature) + " to " +
                        format_cell(e.highest_temperature) + " degC";
     info.generation_tool = producer_string("");
     info.version = version();

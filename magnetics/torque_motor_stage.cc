@@ -156,7 +156,7 @@ namespace servodrift::magnetics
   Table compute_torque_motor_table(const ValveDescription &valve)
   {
     const auto &T = valve.sweeps.table_temperatures;
-    const bool field = valve.torque_motor.model_level == "field";
+    const bool field = valve.torque_motor.model_level == ModelLevel::field;
     Table table(schemas::torque_motor);
     const CaseRows rows = run_sweep(
       std::string("magnetics (") + (field ? "field" : "reduced-order") + ")", T.size(),
@@ -173,6 +173,6 @@ namespace servodrift::magnetics
   void run(const ValveDescription &valve)
   {
     Table table = compute_torque_motor_table(valve);
-    write_table(valve, table, "magnetics/" + valve.torque_motor.model_level);
+    write_table(valve, table, "magnetics/" + to_string(valve.torque_motor.model_level));
   }
 } // namespace servodrift::magnetics

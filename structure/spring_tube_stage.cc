@@ -151,7 +151,7 @@ namespace servodrift::structure
   Table compute_spring_tube_table(const ValveDescription &valve)
   {
     const auto &T = valve.sweeps.table_temperatures;
-    const bool field = valve.spring_tube.model_level == "field";
+    const bool field = valve.spring_tube.model_level == ModelLevel::field;
     Table table(schemas::spring_tube);
     const CaseRows rows = run_sweep(
       std::string("structure (") + (field ? "field" : "reduced-order") + ")", T.size(),
@@ -171,6 +171,6 @@ namespace servodrift::structure
   void run(const ValveDescription &valve)
   {
     Table table = compute_spring_tube_table(valve);
-    write_table(valve, table, "structure/" + valve.spring_tube.model_level);
+    write_table(valve, table, "structure/" + to_string(valve.spring_tube.model_level));
   }
 } // namespace servodrift::structure

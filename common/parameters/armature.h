@@ -17,5 +17,10 @@ namespace servodrift
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(ParameterSource &prm);
+
+    /// r > 0 (E30). Throws InputError naming the entry.
+    void validate() const;
+    /// J_a > 0 (E29). Throws InputError naming the entry.
+    void validate_dynamic_model() const;
   };
 } // namespace servodrift

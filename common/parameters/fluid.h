@@ -1,6 +1,6 @@
 #pragma once
 namespace dealii { class ParameterHandler; }
-namespace servodrift { class ParameterSource; }
+namespace servodrift { class ParameterSource; struct ValveDescription; }
 
 namespace servodrift
 {
@@ -26,5 +26,13 @@ namespace servodrift
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(ParameterSource &prm);
+
+    /// The viscosity law's window: min < max, above E16's singularity. Throws InputError naming the entry.
+    void validate() const;
+    /// The table, drift and reference temperatures inside the window; a positive, finite viscosity and
+    /// density at every table temperature (E14-E16). Throws InputError naming the entry.
+    void validate(const ValveDescription &valve) const;
+    /// beta_e > 0 at every drift temperature (2.8). Throws InputError naming the entry.
+    void validate_dynamic_model(const ValveDescription &valve) const;
   };
 } // namespace servodrift

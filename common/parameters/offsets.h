@@ -18,5 +18,8 @@ namespace servodrift
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(ParameterSource &prm);
+
+    /// No target that re-nulling removes by construction (C8). Throws InputError naming the entry.
+    void validate() const;
   };
 } // namespace servodrift

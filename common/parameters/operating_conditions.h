@@ -16,5 +16,8 @@ namespace servodrift
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(ParameterSource &prm);
+
+    /// p_r < p_s, a rated current > 0. Throws InputError naming the entry.
+    void validate() const;
   };
 } // namespace servodrift

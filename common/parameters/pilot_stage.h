@@ -1,8 +1,10 @@
 #pragma once
+#include "common/parameters/model_level.h"
+
 #include <string>
 #include <vector>
 namespace dealii { class ParameterHandler; }
-namespace servodrift { class ParameterSource; }
+namespace servodrift { class ParameterSource; struct ValveDescription; }
 
 namespace servodrift
 {
@@ -11,7 +13,7 @@ namespace servodrift
   struct PilotStageParameters
   {
     static constexpr const char *subsection = "Pilot stage";
-    std::string model_level;        ///< "reduced-order" (E21-E23) or "field" (finite volumes, 4.2)
+    ModelLevel model_level;         ///< reduced-order (E21-E23) or field (finite volumes, 4.2)
     double fixed_orifice_diameter;  ///< D_0 [m]
     double fixed_orifice_length;    ///< l_0 [m]
     double nozzle_diameter;         ///< D_N [m]
@@ -66,5 +68,14 @@ namespace servodrift
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(ParameterSource &prm);
+
+    /// The time steps' limit of a time average at least its first count. Throws InputError naming the entry.
+    void validate_time_average() const;
+    /// Positive dimensions, x0 <= D_N/4 (E32), D_land > D_N (E22). Throws InputError naming the entry.
+    void validate() const;
+    /// The null gap open at every table temperature (2.3). Throws InputError naming the entry.
+    void validate(const ValveDescription &valve) const;
+    /// V_0 above the volume the spool end sweeps (E33). Throws InputError naming the entry.
+    void validate_dynamic_model(const ValveDescription &valve) const;
   };
 } // namespace servodrift

@@ -9,7 +9,7 @@ namespace servodrift
   void PilotStageParameters::parse_parameters(ParameterSource &prm)
   {
     prm.enter_subsection(subsection);
-    model_level = prm.get("Model level");
+    model_level = parse_model_level(prm.get("Model level"));
     fixed_orifice_diameter = prm.get_double("Fixed orifice diameter");
     fixed_orifice_length = prm.get_double("Fixed orifice length");
     nozzle_diameter = prm.get_double("Nozzle diameter");

@@ -32,5 +32,11 @@ namespace servodrift
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(ParameterSource &prm);
+
+    /// Positive diameters, overlap and radial clearance (E36), a stroke beyond the overlap. Throws
+    /// InputError naming the entry.
+    void validate() const;
+    /// Positive mass (E35) and volumes (E37). Throws InputError naming the entry.
+    void validate_dynamic_model() const;
   };
 } // namespace servodrift

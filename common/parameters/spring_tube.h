@@ -1,7 +1,9 @@
 #pragma once
+#include "common/parameters/model_level.h"
+
 #include <string>
 namespace dealii { class ParameterHandler; }
-namespace servodrift { class ParameterSource; }
+namespace servodrift { class ParameterSource; struct ValveDescription; }
 
 namespace servodrift
 {
@@ -10,7 +12,7 @@ namespace servodrift
   struct SpringTubeParameters
   {
     static constexpr const char *subsection = "Spring tube";
-    std::string model_level; ///< "reduced-order" (E11-E13) or "field" (D12, model.md 4.3)
+    ModelLevel model_level;  ///< reduced-order (E11-E13) or field (D12, model.md 4.3)
     double youngs_modulus;   ///< E_ref at the reference temperature [Pa]
     double reference_temperature; ///< T_ref of E, D, d, l [degC]
     double modulus_temperature_coefficient; ///< eta: E = E_ref (1 - eta (T - T_ref)) [1/degC]
@@ -32,5 +34,12 @@ namespace servodrift
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(ParameterSource &prm);
+
+    /// Positive dimensions, d < D. Throws InputError naming the entry.
+    void validate() const;
+    /// A bore, nu < 0.5 and ends that can be meshed; for the field level. Throws InputError naming the entry.
+    void validate_field_model() const;
+    /// E(T) > 0 at every table temperature (E12). Throws InputError naming the entry.
+    void validate(const ValveDescription &valve) const;
   };
 } // namespace servodrift

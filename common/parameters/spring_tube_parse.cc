@@ -9,7 +9,7 @@ namespace servodrift
   void SpringTubeParameters::parse_parameters(ParameterSource &prm)
   {
     prm.enter_subsection(subsection);
-    model_level = prm.get("Model level");
+    model_level = parse_model_level(prm.get("Model level"));
     youngs_modulus = prm.get_double("Young's modulus");
     reference_temperature = prm.get_double("Reference temperature");
     modulus_temperature_coefficient = prm.get_double("Modulus temperature coefficient");

@@ -14,7 +14,7 @@ namespace servodrift
                       "Temperatures at which every stage writes its coefficient table (D3); strictly "
                       "increasing, inside the fluid's viscosity-law window. The default spans an aircraft "
                       "valve's range, -55 to 135 degC, closer at the cold end, where the viscosity changes "
-                      "fastest (doc/validation.md, \"Between table temperatures\"). [degC]");
+                      "fastest (doc/validation.md, \"The whole temperature range\"). [degC]");
     prm.declare_entry("Motor angles",
                       "-0.25, -0.15, -0.1, -0.05, 0, 0.05, 0.1, 0.15, 0.25",
                       double_list(-10, 10, 2),

@@ -1,7 +1,7 @@
 #pragma once
 #include <vector>
 namespace dealii { class ParameterHandler; }
-namespace servodrift { class ParameterSource; }
+namespace servodrift { class ParameterSource; struct ValveDescription; }
 
 namespace servodrift
 {
@@ -23,5 +23,11 @@ namespace servodrift
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(ParameterSource &prm);
+
+    /// Every list strictly increasing, the field level's fractions > 0. Throws InputError naming the entry.
+    void validate() const;
+    /// The drift temperatures and `Operating conditions/Reference temperature' within the table
+    /// temperatures. Throws InputError naming the entry.
+    void validate(const ValveDescription &valve) const;
   };
 } // namespace servodrift

@@ -1,7 +1,9 @@
 #pragma once
+#include "common/parameters/model_level.h"
+
 #include <string>
 namespace dealii { class ParameterHandler; }
-namespace servodrift { class ParameterSource; }
+namespace servodrift { class ParameterSource; struct ValveDescription; }
 
 namespace servodrift
 {
@@ -10,7 +12,7 @@ namespace servodrift
   struct TorqueMotorParameters
   {
     static constexpr const char *subsection = "Torque motor";
-    std::string model_level; ///< "reduced-order" (E3 circuit); the field level comes with the FEM solver
+    ModelLevel model_level;  ///< reduced-order (the E3 circuit) or field (FEM, model.md 4.1)
 
     unsigned int turns_per_coil;  ///< N_c [1]
     bool series_aiding;           ///< false: push-pull, net MMF N_c i (D7); true: 2 N_c i
@@ -64,6 +66,15 @@ namespace servodrift
 
     static void declare_parameters(dealii::ParameterHandler &prm);
     void parse_parameters(ParameterSource &prm);
+
+    /// Positive dimensions, remanence and leakage reluctance (E3, E8). Throws InputError naming the entry.
+    void validate() const;
+    /// Gaps open at every table temperature and motor angle (E6, E7); motor angles and currents that
+    /// cover the secant K_m (C1) and the rated current. Throws InputError naming the entry.
+    void validate(const ValveDescription &valve) const;
+    /// The planar field model's parts without overlap (meshes/torque_motor.geo); for the field level.
+    /// Throws InputError naming the entry.
+    void validate_field_model() const;
 
     /// Net control MMF per ampere of differential current: N_c (push-pull) or 2 N_c (series) [1].
     double effective_turns() const { return series_aiding ? 2.0 * turns_per_coil : 1.0 * turns_per_coil; }

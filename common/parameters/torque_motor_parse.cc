@@ -9,7 +9,7 @@ namespace servodrift
   void TorqueMotorParameters::parse_parameters(ParameterSource &prm)
   {
     prm.enter_subsection(subsection);
-    model_level = prm.get("Model level");
+    model_level = parse_model_level(prm.get("Model level"));
     turns_per_coil = prm.get_integer("Turns per coil");
     series_aiding = prm.get("Coil connection") == "series-aiding";
     pivot_to_pole_distance = prm.get_double("Pivot to pole-face distance");
