@@ -5,6 +5,12 @@
 
 #include <string>
 
+// A test that takes 20 s or more on the 2-core machine: as TEST and TEST_P, and ctest labels it (and
+// every instance of a parameterised one) `slow' as well, read from this mark in the test's source
+// (tests/slow_gtests.cmake), so that `ctest -LE slow' leaves it out.
+#define SLOW_TEST(suite, name) TEST(suite, name)
+#define SLOW_TEST_P(suite, name) TEST_P(suite, name)
+
 namespace servodrift::test
 {
   /// A fresh, empty temporary directory (removed at the end of a passing test program).

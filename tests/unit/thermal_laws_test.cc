@@ -2,6 +2,7 @@
 // significant digits; each tolerance below is the rounding of the printed value.
 #include "common/error.h"
 #include "common/thermal_laws.h"
+#include "tests/support/checks.h"
 #include "tests/support/core_support.h"
 
 #include <gtest/gtest.h>
@@ -23,7 +24,8 @@ TEST(OilLaw, VogelViscosityMatchesModelTable)
                                                 {60, 9.36}, {80, 6.78}, {100, 5.20}, {120, 4.17}};
   for (const auto &[T, nu] : expected)
     // printed to 3 significant digits: half a unit of the last digit is <= 0.5 % of 9.36
-    EXPECT_LT(relative(oil.kinematic_viscosity(T).value * 1e6, nu), 0.006) << T << " degC";
+    EXPECT_CHECK_RELATIVE("Vogel viscosity E16 at " + format_number(T) + " degC [mm^2/s]",
+                          oil.kinematic_viscosity(T).value * 1e6, nu, 0.006, "model.md E16");
 }
 
 TEST(OilLaw, VogelViscosityMeetsTheOilSpecificationOverTheWholeRange)
@@ -33,15 +35,17 @@ TEST(OilLaw, VogelViscosityMeetsTheOilSpecificationOverTheWholeRange)
   // 5.20, 500 and 2212: inside each, and at -55 degC (2522) within 1 % of the -54 ceiling.
   const laws::Oil oil(test::rv1().fluid, 40);
   const auto nu = [&](double T) { return oil.kinematic_viscosity(T).value * 1e6; };
-  EXPECT_GE(nu(40), 13.2);
-  EXPECT_GE(nu(100), 4.90);
-  EXPECT_LE(nu(-40), 600);
-  EXPECT_LE(nu(-54), 2500);
-  EXPECT_LT(nu(-55), 1.01 * 2500);
-  RecordProperty("viscosity_at_minus_54_mm2_per_s", std::to_string(nu(-54)));
+  EXPECT_CHECK_AT_LEAST("viscosity at 40 degC [mm^2/s]", nu(40), 13.2, "MIL-PRF-5606H");
+  EXPECT_CHECK_AT_LEAST("viscosity at 100 degC [mm^2/s]", nu(100), 4.90, "MIL-PRF-5606H");
+  EXPECT_CHECK_AT_MOST("viscosity at -40 degC [mm^2/s]", nu(-40), 600, "MIL-PRF-5606H");
+  EXPECT_CHECK_AT_MOST("viscosity at -54 degC [mm^2/s]", nu(-54), 2500, "MIL-PRF-5606H");
+  EXPECT_CHECK_AT_MOST("viscosity at -55 degC [mm^2/s]", nu(-55), 1.01 * 2500, "1 % above the -54 degC ceiling");
   // and falls monotonically to the top of the window, where it stays positive and finite
+  bool falling = true;
   for (double T = -55; T < 150; T += 1)
-    EXPECT_GT(nu(T), nu(T + 1)) << T;
+    falling = falling && nu(T) > nu(T + 1);
+  EXPECT_TRUE(falling);
+  test::record_check("viscosity falls monotonically, -55 to 150 degC", "every 1 K", "strict", falling ? "yes" : "no");
 }
 
 TEST(OilLaw, LawRangesNameTheLawsATableLeaves)
@@ -80,7 +84,9 @@ TEST(OilLaw, ViscosityDerivativeIsConsistent)
                                                       FluidParameters::ViscosityLaw::paper_exponential;
       const laws::Oil oil(p, 40);
       const double h = 1e-3, numeric = (oil.kinematic_viscosity(80 + h).value - oil.kinematic_viscosity(80 - h).value) / (2 * h);
-      EXPECT_LT(relative(oil.kinematic_viscosity(80).slope, numeric), 1e-6) << law; // O(h^2) central difference
+      // an O(h^2) central difference
+      EXPECT_CHECK_RELATIVE(std::string("viscosity derivative at 80 degC, ") + law + " [m^2/(s K)]",
+                            oil.kinematic_viscosity(80).slope, numeric, 1e-6, "central difference");
     }
 }
 
@@ -91,19 +97,23 @@ TEST(OilLaw, PaperExponentialRatio)
   f.viscosity_law = FluidParameters::ViscosityLaw::paper_exponential;
   const laws::Oil oil(f, 40);
   EXPECT_NEAR(oil.kinematic_viscosity(40).value, 14.0e-6, 1e-15);
-  EXPECT_NEAR(oil.kinematic_viscosity(120).value / oil.kinematic_viscosity(40).value, std::exp(-0.0626 * 80), 1e-15);
+  EXPECT_CHECK_ABSOLUTE("paper exponential E14: nu(120)/nu(40)",
+                        oil.kinematic_viscosity(120).value / oil.kinematic_viscosity(40).value,
+                        std::exp(-0.0626 * 80), 1e-15, "exp(-0.0626 * 80)");
 }
 
 TEST(OilLaw, DensityBulkModulusAndDynamicViscosity)
 {
   const laws::Oil oil(test::rv1().fluid, 40);
   EXPECT_DOUBLE_EQ(oil.density(40).value, 850.0);
-  EXPECT_LT(relative(oil.density(120).value, 811.0), 0.001); // E15, model.md 2.8: 811 kg/m^3
+  EXPECT_CHECK_RELATIVE("density E15 at 120 degC [kg/m^3]", oil.density(120).value, 811.0, 0.001, "model.md 2.8");
   EXPECT_DOUBLE_EQ(oil.effective_bulk_modulus(40), 0.7e9);
-  EXPECT_LT(relative(oil.effective_bulk_modulus(120), 0.7e9 * (1 - 0.004 * 80)), 1e-14);
+  EXPECT_CHECK_RELATIVE("effective bulk modulus at 120 degC [Pa]", oil.effective_bulk_modulus(120),
+                        0.7e9 * (1 - 0.004 * 80), 1e-14, "model.md 2.8: 0.7 GPa (1 - 0.004 dT)");
   // 1.7: mu = 0.0119 Pa*s at 40 degC, 0.0034 at 120 degC (printed to 3 and 2 digits)
-  EXPECT_LT(relative(oil.dynamic_viscosity(40), 0.0119), 0.005);
-  EXPECT_LT(relative(oil.dynamic_viscosity(120), 0.0034), 0.015);
+  EXPECT_CHECK_RELATIVE("dynamic viscosity at 40 degC [Pa s]", oil.dynamic_viscosity(40), 0.0119, 0.005, "model.md 1.7");
+  EXPECT_CHECK_RELATIVE("dynamic viscosity at 120 degC [Pa s]", oil.dynamic_viscosity(120), 0.0034, 0.015,
+                        "model.md 1.7");
 }
 
 TEST(OilLaw, RefusesTemperatureOutsideItsWindow)
@@ -119,10 +129,12 @@ TEST(SpringTubeLaw, YoungsModulusAndDimensions)
   const auto v = test::rv1();
   // E12 with T_ref = 20 degC (C3)
   EXPECT_DOUBLE_EQ(laws::youngs_modulus(v.spring_tube, 20), 128e9);
-  EXPECT_LT(relative(laws::youngs_modulus(v.spring_tube, 120), 128e9 * (1 - 3.5e-4 * 100)), 1e-14);
+  EXPECT_CHECK_RELATIVE("spring-tube modulus E12 at 120 degC [Pa]", laws::youngs_modulus(v.spring_tube, 120),
+                        128e9 * (1 - 3.5e-4 * 100), 1e-14, "E12, T_ref = 20 degC (C3)");
   // E13: every dimension grows with alpha_s
   const auto g = laws::spring_tube_geometry(v.spring_tube, v.expansion, 120);
-  EXPECT_LT(relative(g.outer_diameter, 3.60e-3 * (1 + 17.8e-6 * 100)), 1e-14);
+  EXPECT_CHECK_RELATIVE("spring-tube outer diameter E13 at 120 degC [m]", g.outer_diameter,
+                        3.60e-3 * (1 + 17.8e-6 * 100), 1e-14, "E13");
   EXPECT_LT(relative(g.inner_diameter, 3.40e-3 * (1 + 17.8e-6 * 100)), 1e-14);
   EXPECT_LT(relative(g.length, 10.0e-3 * (1 + 17.8e-6 * 100)), 1e-14);
 }
@@ -136,10 +148,11 @@ TEST(TorqueMotorLaw, AirGapsGrowAsModelSection13)
   const auto g120 = laws::torque_motor_geometry(v.torque_motor, v.expansion, 120, 40);
   EXPECT_NEAR(g40.lower_gap, 300.0e-6, 1e-12);
   EXPECT_NEAR(g40.upper_gap, 300.0e-6, 1e-12);
-  EXPECT_NEAR(g120.lower_gap, 307.8e-6, 0.05e-6);
-  EXPECT_NEAR(g120.upper_gap, 294.5e-6, 0.05e-6);
-  EXPECT_NEAR((g120.lower_gap - g40.lower_gap) / 80, 0.098e-6, 0.0005e-6);
-  EXPECT_NEAR((g120.upper_gap - g40.upper_gap) / 80, -0.068e-6, 0.0005e-6);
+  EXPECT_CHECK_ABSOLUTE("air gap g_12 E6 at 120 degC [um]", g120.lower_gap * 1e6, 307.8, 0.05, "model.md 1.3");
+  EXPECT_CHECK_ABSOLUTE("air gap g_34 E7 at 120 degC [um]", g120.upper_gap * 1e6, 294.5, 0.05, "model.md 1.3");
+  EXPECT_CHECK_ABSOLUTE("dg_12/dT [um/K]", (g120.lower_gap - g40.lower_gap) / 80 * 1e6, 0.098, 0.0005, "model.md 1.3");
+  EXPECT_CHECK_ABSOLUTE("dg_34/dT [um/K]", (g120.upper_gap - g40.upper_gap) / 80 * 1e6, -0.068, 0.0005,
+                        "model.md 1.3");
   EXPECT_LT(relative(g120.pivot_to_pole_distance, 14.8e-3 * (1 + 9e-6 * 80)), 1e-14);
   EXPECT_LT(relative(g120.magnet_area, 25e-6 * std::pow(1 + 11e-6 * 80, 2)), 1e-14);
 }
@@ -149,7 +162,8 @@ TEST(TorqueMotorLaw, Remanence)
   // E8, D4: B_r(40) = 0.90 T, alpha_Br = -2.5e-4 -> 0.882 T at 120 degC
   const auto v = test::rv1();
   EXPECT_DOUBLE_EQ(laws::remanence(v.torque_motor, 40, 40), 0.90);
-  EXPECT_NEAR(laws::remanence(v.torque_motor, 120, 40), 0.882, 1e-15);
+  EXPECT_CHECK_ABSOLUTE("remanence E8 at 120 degC [T]", laws::remanence(v.torque_motor, 120, 40), 0.882, 1e-15,
+                        "E8, D4: 0.90 T, -2.5e-4/K");
   auto m = v.torque_motor;
   m.irreversible_loss = 0.1;
   EXPECT_NEAR(laws::remanence(m, 40, 40), 0.81, 1e-15);
@@ -164,5 +178,7 @@ TEST(PilotStageLaw, NullGapOfAnAluminiumBody)
   auto aluminium = test::rv1();
   aluminium.expansion.body = 23e-6; // `Thermal expansion/Body' = 23e-6
   const auto ga = laws::pilot_stage_geometry(aluminium.pilot, aluminium.armature, aluminium.expansion, 120, 40);
-  EXPECT_NEAR((ga.null_gap - 40e-6) / 80, 0.08e-6, 0.004e-6); // "about 0.08": within 5 %
+  // "about 0.08": within 5 %
+  EXPECT_CHECK_RELATIVE("null gap of an aluminium body, dx0/dT [um/K]", (ga.null_gap - 40e-6) / 80 * 1e6, 0.08, 0.05,
+                        "model.md 2.3");
 }

@@ -13,18 +13,20 @@
 #include "system/steady_state_check.h"
 #include "system/step_response.h"
 #include "system/valve_model.h"
+#include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 using namespace servodrift;
 using namespace servodrift::system;
-using test::relative;
 
 namespace
 {
@@ -51,6 +53,9 @@ namespace
 
   constexpr double rated = 0.02, bias = 0.01;
 
+  /// The larger of a worst case so far and a value; a value that is not a number stays the worst.
+  double worse(double worst, double value) { return std::isnan(value) || value > worst ? value : worst; }
+
   /// The largest |F_k|/(scale_k w_ref): how far a state is from rest, in each state's scale per
   /// armature time unit (w_ref = sqrt(K_a/J_a)).
   double scaled_rates(const ValveDynamics &d, const ValveState &s, double command)
@@ -70,13 +75,16 @@ TEST(Dynamics, StaticPointIsTheDynamicModelAtZeroRates)
   // One set of equations: every rate vanishes at the static operating point, to the static solver's
   // root tolerances (1e-13 of each bracket), free or saturated.
   const auto &v = rv1();
+  double worst = 0;
   for (double T : {40.0, 80.0, 120.0})
     for (double i : {0.0, bias, rated, -rated})
       {
         const auto d = v.dynamics(T);
         const OperatingPoint op = v.model.solve(d.equations(), i);
-        EXPECT_LT(scaled_rates(d, op.state(), i), 1e-9) << T << " degC, " << i << " A, " << to_string(op.spool.state);
+        worst = worse(worst, scaled_rates(d, op.state(), i));
       }
+  EXPECT_CHECK_AT_MOST("largest rate at the static point, 40/80/120 degC; 0, bias, +-rated [scale x sqrt(K_a/J_a)]",
+                       worst, 1e-9, "every rate 0");
   // pressed onto a nozzle (E38 with theta_d = 1 deg) and the spool on its stop: the contact and the
   // stop hold the static point too
   Offsets pressed;
@@ -85,7 +93,8 @@ TEST(Dynamics, StaticPointIsTheDynamicModelAtZeroRates)
   const OperatingPoint op = v.model.solve(d.equations(), 0.0);
   ASSERT_EQ(op.flapper, FlapperState::on_right_nozzle);
   ASSERT_EQ(op.spool.state, SpoolState::on_negative_stop);
-  EXPECT_LT(scaled_rates(d, op.state(), 0.0), 1e-9);
+  EXPECT_CHECK_AT_MOST("largest rate at the static point on a nozzle and a stop, 40 degC [scale x sqrt(K_a/J_a)]",
+                       scaled_rates(d, op.state(), 0.0), 1e-9, "every rate 0");
 }
 
 TEST(Dynamics, StaysAtTheStaticPointAndSettlesOnItFromRest)
@@ -93,13 +102,18 @@ TEST(Dynamics, StaysAtTheStaticPointAndSettlesOnItFromRest)
   // issue 23: from the static point the drift stays below 1e-8 of each state's scale; from rest
   // (every pressure at return, armature and spool centred) the valve settles within 1e-6 of it
   const auto &v = rv1();
+  double drift = 0, distance = 0;
   for (double T : {40.0, 120.0})
     for (double i : {bias, rated})
       {
         const auto c = steady_state_check(v.model, v.dynamics(T), i, v.description.dynamics);
-        EXPECT_LT(c.drift_from_static, 1e-8) << T << " " << i;
-        EXPECT_LT(c.distance_from_rest, 1e-6) << T << " " << i;
+        drift = worse(drift, c.drift_from_static);
+        distance = worse(distance, c.distance_from_rest);
       }
+  EXPECT_CHECK_AT_MOST("drift integrated from the static point, 40/120 degC, bias and rated [state scales]", drift,
+                       1e-8, "stays there (issue 23)");
+  EXPECT_CHECK_AT_MOST("started from rest: distance from the static point, 40/120 degC, bias and rated [state scales]",
+                       distance, 1e-6, "settles on it (issue 23)");
 }
 
 TEST(Dynamics, BlockedArmatureModeIsTheClosedForm)
@@ -109,15 +123,21 @@ TEST(Dynamics, BlockedArmatureModeIsTheClosedForm)
   // takes K_m as the Richardson slope of the torque table at null and K_f from the bridge by central
   // differences; the linearisation differentiates the PCHIP interpolant at the node: 0.1 % apart.
   const auto &v = rv1();
+  double compressible = 0, coupled = 0;
   for (double T : {40.0, 80.0, 120.0})
     {
       const DynamicChecks c = dynamic_checks(v.model, v.dynamics(T));
       EXPECT_NEAR(c.armature_closed_form, 1005, 10) << T;
-      EXPECT_LT(relative(c.armature_blocked, c.armature_closed_form), 2e-3) << T;
+      EXPECT_CHECK_RELATIVE("armature mode, spool blocked, pressures quasi-static, " + format_number(T) + " degC [Hz]",
+                            c.armature_blocked, c.armature_closed_form, 2e-3, "model.md 2.5, C13");
       // compressible cavities lag the flapper, and a free spool takes up pilot flow: each lowers it
-      EXPECT_LT(c.armature_compressible, 0.9 * c.armature_blocked) << T;
-      EXPECT_LT(c.armature_coupled, c.armature_compressible) << T;
+      compressible = worse(compressible, c.armature_compressible / c.armature_blocked);
+      coupled = worse(coupled, c.armature_coupled / c.armature_compressible);
     }
+  EXPECT_CHECK_AT_MOST("armature mode with compressible cavities / blocked, 40-120 degC", compressible, 0.9,
+                       "lower (doc/method.md)");
+  EXPECT_CHECK_AT_MOST("armature mode of the coupled valve / compressible cavities, 40-120 degC", coupled, 1,
+                       "lower again (doc/method.md)");
 }
 
 TEST(Dynamics, ControlCavityPressureTimeConstant)
@@ -130,8 +150,12 @@ TEST(Dynamics, ControlCavityPressureTimeConstant)
   for (double T : {40.0, 120.0})
     {
       const DynamicChecks c = dynamic_checks(v.model, v.dynamics(T));
-      EXPECT_LT(relative(c.pressure_time_constant, c.pressure_time_constant_tables), 1e-6) << T;
-      EXPECT_LT(relative(c.pressure_time_constant, c.pressure_time_constant_closed_form), 0.1) << T;
+      const std::string at = ", " + format_number(T) + " degC [ms]";
+      EXPECT_CHECK_RELATIVE("control-cavity time constant" + at, 1e3 * c.pressure_time_constant,
+                            1e3 * c.pressure_time_constant_tables, 1e-6, "V/(beta_e dQ/dp), the tables' slopes");
+      EXPECT_CHECK_RELATIVE("control-cavity time constant against turbulent orifices" + at,
+                            1e3 * c.pressure_time_constant, 1e3 * c.pressure_time_constant_closed_form, 0.1,
+                            "V/(beta_e (Q/(2 dp_0) + Q/(2 dp_N)))");
     }
   // in the time domain: p_L, disturbed by 0.1 % of the span, decays by e in one time constant
   const auto d = v.dynamics(40, HeldParts{true, false, true});
@@ -143,7 +167,9 @@ TEST(Dynamics, ControlCavityPressureTimeConstant)
   const auto integrator = d.integrator([](double) { return 0.0; }, v.description.dynamics, "test", d.vector_of(null.state()));
   integrator->start(0.0, y0);
   const double left = integrator->advance_to(c.pressure_time_constant)[2] - null.bridge.left_pressure;
-  EXPECT_LT(relative(left / disturbance, std::exp(-1.0)), 2e-3); // second order in the disturbance
+  // second order in the disturbance
+  EXPECT_CHECK_RELATIVE("p_L disturbance of 0.1 % after one time constant, 40 degC [of its start]",
+                        left / disturbance, std::exp(-1.0), 2e-3, "e^-1");
 }
 
 TEST(Dynamics, CavityMassIsConservedOverAStep)
@@ -177,7 +203,10 @@ TEST(Dynamics, CavityMassIsConservedOverAStep)
       });
       const double swept = A_v * (previous[4] - start.spool.displacement);
       // 3e-5 (spool held) and 3e-8 (spool free) of the flow: the quadratures' and the integrator's errors
-      EXPECT_LT(std::abs(flow - compression - swept), 1e-4 * std::abs(flow)) << spool_held;
+      EXPECT_CHECK_AT_MOST(std::string("control-cavity mass balance over the step 0 -> rated, spool ") +
+                             (spool_held ? "held" : "free") + ": error [of the net flow]",
+                           std::abs(flow - compression - swept) / std::abs(flow), 1e-4,
+                           "E33: int (Q_0 - Q_N) dt = int V/beta_e dp + A_v dx_v");
       if (spool_held)
         {
           EXPECT_EQ(swept, 0.0);
@@ -191,6 +220,7 @@ TEST(Dynamics, SymmetricValveIsOddInTheCurrent)
   // the spool held centred (the three-way spool itself is not symmetric, and off centre it makes the
   // two control cavities differ), along the whole transient of a step.
   const auto &v = rv1();
+  double odd = 0;
   for (double T : {40.0, 120.0})
     {
       EXPECT_LT(std::abs(v.model.solve(T, rated, {}).control_pressure_difference() +
@@ -217,8 +247,11 @@ TEST(Dynamics, SymmetricValveIsOddInTheCurrent)
           worst = std::max(worst, std::abs(plus[k] + minus[k]));
           largest = std::max(largest, std::abs(plus[k]));
         }
-      EXPECT_LT(worst, 1e-5 * largest) << T; // the integrator's step sequences differ: rtol 1e-6
+      odd = worse(odd, worst / largest); // the integrator's step sequences differ: rtol 1e-6
     }
+  EXPECT_CHECK_AT_MOST("spool held centred: (p_L - p_R)(+rated) + (p_L - p_R)(-rated) along the step, 40/120 degC "
+                       "[of its largest value]",
+                       odd, 1e-5, "odd in the current");
 }
 
 TEST(Dynamics, LinearisationAtZeroFrequencyIsTheStaticSensitivity)
@@ -232,7 +265,9 @@ TEST(Dynamics, LinearisationAtZeroFrequencyIsTheStaticSensitivity)
       const double h = 1e-4 * rated;
       const double static_gain = (v.model.solve(T, bias + h, {}).spool.brake_pressure -
                                   v.model.solve(T, bias - h, {}).spool.brake_pressure) / (2 * h);
-      EXPECT_LT(relative(std::real(transfer(l, Output::brake_pressure, 0.0)), static_gain), 1e-4) << T;
+      EXPECT_CHECK_RELATIVE("DC gain of the linearisation dp_B/di at the bias, " + format_number(T) + " degC [MPa/A]",
+                            1e-6 * std::real(transfer(l, Output::brake_pressure, 0.0)), 1e-6 * static_gain, 1e-4,
+                            "static solver, central differences");
       EXPECT_LT(std::abs(std::imag(transfer(l, Output::brake_pressure, 0.0))), 1e-12 * static_gain);
     }
 }
@@ -244,21 +279,33 @@ TEST(Dynamics, ModesAreNamedAndComplete)
   const Linearisation l = linearise(d, v.model.solve(d.equations(), bias).state(), bias);
   const auto m = modes(l);
   std::size_t states = 0;
+  double participation = 0, decay = -std::numeric_limits<double>::infinity();
   for (const Mode &mode : m)
     {
       states += mode.eigenvalue.imag() > 0 ? 2 : 1;
       double sum = 0;
       for (double p : mode.participation)
         sum += p;
-      EXPECT_NEAR(sum, 1.0, 1e-12);
-      EXPECT_LT(mode.eigenvalue.real(), 0.0) << mode.name; // RV-1 is stable at the bias
+      participation = worse(participation, std::abs(sum - 1.0));
+      decay = worse(decay, mode.eigenvalue.real()); // RV-1 is stable at the bias
     }
+  EXPECT_CHECK_AT_MOST("modes at the bias, 40 degC: a mode's participations summed, largest error", participation,
+                       1e-12, "sum 1");
+  EXPECT_CHECK_AT_MOST("modes at the bias, 40 degC: largest real part of an eigenvalue [1/s]", decay, 0, "stable");
   EXPECT_EQ(states, 7u);
   std::vector<std::string> names;
   for (const Mode &mode : m)
     names.push_back(mode.name);
+  bool named = true;
   for (const char *expected : {"armature-flapper", "pilot pressures", "spool + brake volume", "pilot pressures + spool"})
-    EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
+    {
+      const bool found = std::find(names.begin(), names.end(), expected) != names.end();
+      EXPECT_TRUE(found) << expected;
+      named = named && found;
+    }
+  test::record_check("modes at the bias, 40 degC: states; names",
+                     "7; armature-flapper, pilot pressures, spool + brake volume, pilot pressures + spool", "exact",
+                     std::to_string(states) + (named ? "; all named" : "; a name missing"));
 }
 
 TEST(Dynamics, SmallNonlinearStepFollowsTheLinearisation)
@@ -292,8 +339,10 @@ TEST(Dynamics, SmallNonlinearStepFollowsTheLinearisation)
       worst = std::max(worst, std::abs(s.states[k].brake_pressure - point.spool.brake_pressure - linear(s.times[k])));
     }
   // the valve's own nonlinearity: 1.5 % of the change for a step of 1e-3 rated, 0.15 % for 1e-4
-  EXPECT_LT(worst, 5e-3 * std::abs(change));
-  EXPECT_LT(relative(change, -(A.partialPivLu().solve(b))(6) * l.scales[6]), 1e-3);
+  EXPECT_CHECK_AT_MOST("step of 1e-4 rated at the bias, 80 degC: p_B against linear, largest error [of the change]",
+                       worst / std::abs(change), 5e-3, "C A^-1 (exp(A t) - I) B di");
+  EXPECT_CHECK_RELATIVE("step of 1e-4 rated at the bias, 80 degC: change of p_B [Pa]", change,
+                        -(A.partialPivLu().solve(b))(6) * l.scales[6], 1e-3, "-C A^-1 B di");
   // the linear response's rise time by bisection on the matrix exponential
   const auto crossing = [&](double level) {
     double a = 0, z = s.metrics[0].settling_time.value();
@@ -302,7 +351,9 @@ TEST(Dynamics, SmallNonlinearStepFollowsTheLinearisation)
     return 0.5 * (a + z);
   };
   ASSERT_TRUE(s.metrics[0].rise_time.has_value());
-  EXPECT_LT(relative(*s.metrics[0].rise_time, crossing(0.9) - crossing(0.1)), 5e-3);
+  EXPECT_CHECK_RELATIVE("step of 1e-4 rated at the bias, 80 degC: rise time 10-90 % [ms]",
+                        1e3 * *s.metrics[0].rise_time, 1e3 * (crossing(0.9) - crossing(0.1)), 5e-3,
+                        "the linear response");
 }
 
 TEST(Dynamics, SmallSineMatchesTheLinearisationAtTheLinearLimit)
@@ -316,6 +367,7 @@ TEST(Dynamics, SmallSineMatchesTheLinearisationAtTheLinearLimit)
   const auto &v = rv1();
   const auto &p = v.description.dynamics;
   const auto d = v.dynamics(40);
+  double move_db = 0, move_degrees = 0, difference_db = 0, difference_degrees = 0;
   for (const double b : {bias, rated})
     {
       const OperatingPoint point = v.model.solve(d.equations(), b);
@@ -333,13 +385,22 @@ TEST(Dynamics, SmallSineMatchesTheLinearisationAtTheLinearLimit)
           EXPECT_TRUE(c.linear_limit) << at;
           EXPECT_TRUE(taken.periodic && before.periodic) << at;
           EXPECT_EQ(taken.response_periods, 1u) << at;
-          EXPECT_LE(std::abs(20 * std::log10(std::abs(move))), 0.05) << at;
-          EXPECT_LE(std::abs(std::arg(move)) / units::degree, 0.3) << at;
-          EXPECT_LT(std::abs(20 * std::log10(std::abs(difference))), 0.5) << at;
-          EXPECT_LT(std::abs(std::arg(difference)) / units::degree, 3.0) << at;
+          move_db = worse(move_db, std::abs(20 * std::log10(std::abs(move))));
+          move_degrees = worse(move_degrees, std::abs(std::arg(move)) / units::degree);
+          difference_db = worse(difference_db, std::abs(20 * std::log10(std::abs(difference))));
+          difference_degrees = worse(difference_degrees, std::abs(std::arg(difference)) / units::degree);
           EXPECT_FALSE(taken.beyond_lap) << at;
         }
     }
+  const std::string points = ", 10/50/300/730 Hz, bias and rated, 40 degC";
+  EXPECT_CHECK_AT_MOST("sine: the last halving moves p_B's first harmonic, largest" + points + " [dB]", move_db, 0.05,
+                       "at the linear limit");
+  EXPECT_CHECK_AT_MOST("sine: the last halving moves p_B's first harmonic, largest" + points + " [deg]", move_degrees,
+                       0.3, "at the linear limit");
+  EXPECT_CHECK_AT_MOST("sine: p_B's first harmonic against the linearisation, largest" + points + " [dB]",
+                       difference_db, 0.5, "the linearisation");
+  EXPECT_CHECK_AT_MOST("sine: p_B's first harmonic against the linearisation, largest" + points + " [deg]",
+                       difference_degrees, 3.0, "the linearisation");
 }
 
 TEST(Dynamics, AFlapperDrivenOntoANozzleSaturatesAndSaysSo)
@@ -353,11 +414,11 @@ TEST(Dynamics, AFlapperDrivenOntoANozzleSaturatesAndSaysSo)
   const Linearisation l = linearise(d, point.state(), bias);
   const auto s = sine_response(d, l, point.state(), bias, 10, 6 * rated, wide.description.dynamics);
   EXPECT_TRUE(s.flapper_contact);
-  EXPECT_GT(s.maximum[2], 40e-6);
-  EXPECT_LT(s.maximum[2], 41e-6);
-  EXPECT_GT(s.minimum[2], -41e-6);
+  EXPECT_CHECK_AT_LEAST("6 x rated at 10 Hz, 40 degC: largest x_f [um]", 1e6 * s.maximum[2], 40, "the nozzle, x0");
+  EXPECT_CHECK_AT_MOST("6 x rated at 10 Hz, 40 degC: largest x_f [um]", 1e6 * s.maximum[2], 41, "x0 + 1 um");
+  EXPECT_CHECK_AT_LEAST("6 x rated at 10 Hz, 40 degC: smallest x_f [um]", 1e6 * s.minimum[2], -41, "-(x0 + 1 um)");
   EXPECT_TRUE(std::isfinite(s.distortion));
-  EXPECT_GT(s.distortion, 0.05); // clipped
+  EXPECT_CHECK_AT_LEAST("6 x rated at 10 Hz, 40 degC: harmonic distortion of p_B", s.distortion, 0.05, "clipped");
 }
 
 TEST(Dynamics, VoltageDriveAddsTheCoil)
@@ -372,14 +433,17 @@ TEST(Dynamics, VoltageDriveAddsTheCoil)
       const double R = laws::coil_resistance(voltage.description.torque_motor, T), L = 0.041;
       const OperatingPoint null = voltage.model.solve(held.equations(), 0.0);
       const Linearisation l = linearise(held, null.state(), 0.0);
-      EXPECT_LT(relative(l.A(7, 7), -R / L), 1e-6) << T;
+      const std::string at = ", armature held, " + format_number(T) + " degC";
+      EXPECT_CHECK_RELATIVE("voltage drive: coil pole" + at + " [1/s]", l.A(7, 7), -R / L, 1e-6, "-R_c(T)/L_c");
       const double R0 = laws::coil_resistance(voltage.description.torque_motor, 40);
-      EXPECT_LT(relative(held.steady_current(rated), rated * R0 / R), 1e-12) << T;
+      EXPECT_CHECK_RELATIVE("voltage drive: steady current at rated command" + at + " [mA]",
+                            1e3 * held.steady_current(rated), 1e3 * rated * R0 / R, 1e-12, "R_c(T0)/R_c(T) i_command");
     }
   // the static point is the dynamic one at zero rates with the coil too
   const auto d = voltage.dynamics(80);
   const OperatingPoint op = voltage.model.solve(d.equations(), d.steady_current(bias));
-  EXPECT_LT(scaled_rates(d, op.state(), bias), 1e-9);
+  EXPECT_CHECK_AT_MOST("voltage drive: largest rate at the static point, bias, 80 degC [scale x sqrt(K_a/J_a)]",
+                       scaled_rates(d, op.state(), bias), 1e-9, "every rate 0");
 }
 
 TEST(Dynamics, FailedIntegrationNamesTemperatureAndTime)
@@ -399,6 +463,11 @@ TEST(Dynamics, FailedIntegrationNamesTemperatureAndTime)
       EXPECT_NE(m.find("t = "), std::string::npos) << m;
       EXPECT_NE(m.find("Sweeps/Motor angles"), std::string::npos) << m;
       EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+      const bool named = m.find("at 60 degC") != std::string::npos && m.find("t = ") != std::string::npos &&
+                         m.find("Sweeps/Motor angles") != std::string::npos && m.find('\n') == std::string::npos;
+      test::record_check("a step past the torque table, 60 degC: the error",
+                         "one line naming the temperature, the time and Sweeps/Motor angles", "-",
+                         named ? "names them" : "does not");
     }
   // CVODE's own failure (too few steps allowed) likewise
   auto p = narrow.description.dynamics;
@@ -415,6 +484,13 @@ TEST(Dynamics, FailedIntegrationNamesTemperatureAndTime)
       EXPECT_NE(m.find("CV_TOO_MUCH_WORK"), std::string::npos) << m;
       EXPECT_NE(m.find("Maximum steps"), std::string::npos) << m;
       EXPECT_NE(m.find("the steps are held down by"), std::string::npos) << m; // and the entries that set its speed
+      const bool named = m.find("at 60 degC, t = ") != std::string::npos &&
+                         m.find("CV_TOO_MUCH_WORK") != std::string::npos &&
+                         m.find("Maximum steps") != std::string::npos &&
+                         m.find("the steps are held down by") != std::string::npos;
+      test::record_check("CVODE out of steps, 60 degC: the error",
+                         "naming the temperature, the time, Maximum steps and what held the steps down", "-",
+                         named ? "names them" : "does not");
     }
 }
 
@@ -435,11 +511,14 @@ TEST(Dynamics, ShootingMakesTheColdValvesSineResponsePeriodicInAFewPeriods)
   const SineCheck c = sine_check(d, l, point.state(), bias, 1000, p.sine_check_amplitude * rated, p);
   const SineResponse &taken = c.taken();
   ASSERT_TRUE(taken.periodic);
-  EXPECT_LE(taken.periods, p.maximum_periods);
+  EXPECT_CHECK_AT_MOST("small-signal sine, -55 degC, 1 kHz, bias: periods to the periodic state", taken.periods,
+                       p.maximum_periods, "Maximum periods");
   const auto difference = taken.gain[0] / transfer(l, Output::brake_pressure, 1000);
   RecordProperty("cold_sine_difference_db", test::number(20 * std::log10(std::abs(difference))));
-  EXPECT_LT(std::abs(20 * std::log10(std::abs(difference))), 0.5);
-  EXPECT_LT(std::abs(std::arg(difference)) / units::degree, 3.0);
+  EXPECT_CHECK_AT_MOST("small-signal sine, -55 degC, 1 kHz, bias: p_B's first harmonic against the linearisation [dB]",
+                       std::abs(20 * std::log10(std::abs(difference))), 0.5, "the linearisation");
+  EXPECT_CHECK_AT_MOST("small-signal sine, -55 degC, 1 kHz, bias: p_B's first harmonic against the linearisation [deg]",
+                       std::abs(std::arg(difference)) / units::degree, 3.0, "the linearisation");
   const SineResponse large = sine_response(d, l, point.state(), bias, 1000, 0.25 * rated, p);
   EXPECT_TRUE(large.failure.empty()) << large.failure;
   EXPECT_GT(large.periods, 0u);
@@ -459,6 +538,11 @@ TEST(Dynamics, ASineResponseWhoseIntegrationFailsSaysWhyAndDoesNotStopTheRun)
   EXPECT_FALSE(s.periodic);
   EXPECT_NE(s.failure.find("at 60 degC, 20 Hz, t = "), std::string::npos) << s.failure;
   EXPECT_NE(s.failure.find("Maximum steps"), std::string::npos) << s.failure;
+  const bool kept = !s.periodic && s.failure.find("at 60 degC, 20 Hz, t = ") != std::string::npos &&
+                    s.failure.find("Maximum steps") != std::string::npos;
+  test::record_check("a sine whose integration fails, 60 degC, 20 Hz",
+                     "not periodic; the reason names the temperature, the frequency, the time and Maximum steps", "-",
+                     kept ? "so" : "not so");
 }
 
 TEST(Dynamics, ColdSoakStartRegulatesOnTheStaticPointAndSlowerWhenCold)
@@ -476,14 +560,18 @@ TEST(Dynamics, ColdSoakStartRegulatesOnTheStaticPointAndSlowerWhenCold)
       const auto d = v.dynamics(T);
       const StepResponse s = start_up_response(v.model, d, rated, v.description.dynamics, 50);
       const OperatingPoint end = v.model.solve(d.equations(), rated);
-      EXPECT_LT(s.final_distance, 1e-3) << T;
-      EXPECT_LT(relative(s.metrics[0].final, end.spool.brake_pressure), 1e-12) << T;
+      const std::string at = "cold-soak start at the rated current, " + format_number(T) + " degC: ";
+      EXPECT_CHECK_AT_MOST(at + "distance of the end from the static point [state scales]", s.final_distance, 1e-3,
+                           "e^-8 of the start after 8 time constants");
+      EXPECT_CHECK_RELATIVE(at + "final p_B [MPa]", 1e-6 * s.metrics[0].final, 1e-6 * end.spool.brake_pressure, 1e-12,
+                            "the static point");
       EXPECT_DOUBLE_EQ(s.metrics[0].initial, d.equations().return_pressure()) << T;
       ASSERT_TRUE(s.metrics[0].settling_time.has_value()) << T;
       regulated[T] = *s.metrics[0].settling_time;
       RecordProperty("cold_start_time_to_regulate_s_at_" + std::to_string(int(T)), test::number(regulated[T]));
     }
-  EXPECT_GT(regulated[-55], 3 * regulated[40]);
+  EXPECT_CHECK_AT_LEAST("cold-soak start at the rated current, -55 degC: time to regulate p_B within 2 % [s]",
+                        regulated[-55], 3 * regulated[40], "slower when cold: 3 x the time at 40 degC");
 }
 
 TEST(Dynamics, LargeSignalStudyTemperaturesAreTheEndsAndEvenlySpread)

@@ -20,6 +20,7 @@
 #include "flow/pilot_field.h"
 #include "flow/pilot_field_cases.h"
 #include "flow/pilot_field_time_average.h"
+#include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -42,7 +43,7 @@ namespace servodrift::flow
     EXPECT_EQ(computed_case_flag(0.30, 0.45, 40), flags::beyond_verified);
   }
 
-  TEST(PilotFieldChain, SSTOrificeGoesOnFromKEpsilonWhereItDivergesAlone)
+  SLOW_TEST(PilotFieldChain, SSTOrificeGoesOnFromKEpsilonWhereItDivergesAlone)
   {
     using namespace case_record;
     const double T = 40, dp = 20.6e6;
@@ -91,7 +92,7 @@ namespace servodrift::flow
   // holds against the orifice experiments (doc/validation.md); at this pressure the cavity in the gap
   // leaves C_d little to the model (-1.5 % measured at 50 um). The force is not compared: it is where
   // the models differ (the model-form band, up to 7 % at the null).
-  TEST(PilotFieldChain, LaunderSharmaHotNozzleConvergesFromRest)
+  SLOW_TEST(PilotFieldChain, LaunderSharmaHotNozzleConvergesFromRest)
   {
     using namespace case_record;
     const std::vector<std::string> quiet{"Output/Progress=none", "Output/Flow fields=none"};
@@ -232,7 +233,9 @@ namespace servodrift::flow
     ASSERT_EQ(r[flag], flags::computed);
     EXPECT_EQ(r[model], double(FlowSolverParameters::Turbulence::k_epsilon));
     EXPECT_EQ(r[cavitating], 0);
-    EXPECT_NEAR(r[discharge_coefficient] / reference[discharge_coefficient], 1, 1e-4);
-    EXPECT_LT(r[iterations], reference[iterations]);
+    EXPECT_CHECK_RELATIVE("orifice C_d at 40 degC, 5.15 MPa, k-epsilon, from 60 degC's offered state",
+                          r[discharge_coefficient], reference[discharge_coefficient], 1e-4, "from the laminar fields");
+    EXPECT_CHECK_AT_MOST("iterations from the offered state / from the laminar fields",
+                         r[iterations] / reference[iterations], 1, "fewer");
   }
 } // namespace servodrift::flow

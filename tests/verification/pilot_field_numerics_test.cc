@@ -4,6 +4,7 @@
 // stall window. test::valve() is RV-1, laminar unless a test sets a model, solver tolerance 1e-6.
 #include "common/error.h"
 #include "flow/pilot_field.h"
+#include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 #include "tests/verification/pilot_field_test_cases.h"
 
@@ -25,7 +26,7 @@ namespace servodrift::flow
   // from the start and no cycle window must give the same answer: the converged fields do not
   // depend on the pressure relaxation. Tolerance 1e-4 relative: each run stops when its flow rate has
   // changed by less than 1e-4 over 50 iterations (measured: identical to 5 digits, C_d 0.61551).
-  TEST(PilotField, CaughtCyclesLeaveTheAnswerUnchanged)
+  SLOW_TEST(PilotField, CaughtCyclesLeaveTheAnswerUnchanged)
   {
     ValveDescription v = test::valve();
     // the chamber the cycle was traced on (the default is 30 since; there the reference run, 0.5 from
@@ -64,7 +65,7 @@ namespace servodrift::flow
   // converged states of the cavitating case: the force settles to 1e-4 over 50 iterations, and
   // the vapour region's hysteresis lets converged states from different paths differ by up to
   // 0.3 % (measured, RV-1's null at resolution 2, laminar); the fine mesh needs fewer iterations.
-  TEST(PilotField, GridSequencingKeepsTheFineMeshAnswer)
+  SLOW_TEST(PilotField, GridSequencingKeepsTheFineMeshAnswer)
   {
     ValveDescription v = test::valve();
     v.flow_solver.turbulence = FlowSolverParameters::Turbulence::k_epsilon;
@@ -77,9 +78,12 @@ namespace servodrift::flow
                 sequenced.coarse_mesh_iterations, ladder.discharge_coefficient, ladder.flapper_force, ladder.iterations);
     EXPECT_GT(sequenced.coarse_mesh_iterations, 0u);
     EXPECT_EQ(ladder.coarse_mesh_iterations, 0u);
-    EXPECT_LT(test::relative(sequenced.discharge_coefficient, ladder.discharge_coefficient), 0.003);
-    EXPECT_LT(test::relative(sequenced.flapper_force, ladder.flapper_force), 0.003);
-    EXPECT_LT(sequenced.iterations, ladder.iterations);
+    EXPECT_CHECK_RELATIVE("C_dn at the null, resolution 1.5, k-epsilon, grid-sequenced",
+                          sequenced.discharge_coefficient, ladder.discharge_coefficient, 0.003, "the start-up ladder");
+    EXPECT_CHECK_RELATIVE("flapper force, the same [N]", sequenced.flapper_force, ladder.flapper_force, 0.003,
+                          "the start-up ladder");
+    EXPECT_CHECK_AT_MOST("fine-mesh iterations, grid-sequenced / the start-up ladder's",
+                         double(sequenced.iterations) / ladder.iterations, 1, "fewer");
   }
 
   // `Flow solver/Momentum solver' and `Turbulence solver' reach the same null (RV-1's nozzle at its
@@ -99,8 +103,10 @@ namespace servodrift::flow
                 "F %.6f N in %u\n",
                 jacobi.discharge_coefficient, jacobi.flapper_force, jacobi.iterations, sweep.discharge_coefficient,
                 sweep.flapper_force, sweep.iterations);
-    EXPECT_LT(test::relative(sweep.discharge_coefficient, jacobi.discharge_coefficient), 3e-3);
-    EXPECT_LT(test::relative(sweep.flapper_force, jacobi.flapper_force), 3e-3);
+    EXPECT_CHECK_RELATIVE("C_dn at the null, k-epsilon, Gauss-Seidel sweep on momentum and k, epsilon",
+                          sweep.discharge_coefficient, jacobi.discharge_coefficient, 3e-3, "Jacobi (the defaults)");
+    EXPECT_CHECK_RELATIVE("flapper force, the same [N]", sweep.flapper_force, jacobi.flapper_force, 3e-3,
+                          "Jacobi (the defaults)");
     EXPECT_NE(sweep.iterations, jacobi.iterations);
   }
 
@@ -120,8 +126,10 @@ namespace servodrift::flow
     std::printf("k-epsilon nozzle at the null: C_dn %.6f (limit 0.1 Re) vs %.6f (1e5 Re), F %.6f vs %.6f N\n",
                 bounded.discharge_coefficient, unbounded.discharge_coefficient, bounded.flapper_force,
                 unbounded.flapper_force);
-    EXPECT_LT(test::relative(bounded.discharge_coefficient, unbounded.discharge_coefficient), 1e-9);
-    EXPECT_LT(test::relative(bounded.flapper_force, unbounded.flapper_force), 1e-9);
+    EXPECT_CHECK_RELATIVE("C_dn at the null, k-epsilon, mu_t limit 0.1 Re (the default)", bounded.discharge_coefficient,
+                          unbounded.discharge_coefficient, 1e-9, "limit 1e5 Re");
+    EXPECT_CHECK_RELATIVE("flapper force, the same [N]", bounded.flapper_force, unbounded.flapper_force, 1e-9,
+                          "limit 1e5 Re");
     v.pilot.field_turbulent_viscosity_limit = 1e-3;
     try
       {

@@ -15,6 +15,7 @@
 #include "common/units.h"
 #include "common/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
+#include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 #include "tests/verification/pilot_field_test_cases.h"
 
@@ -25,6 +26,9 @@
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace servodrift::flow
 {
@@ -67,8 +71,8 @@ namespace servodrift::flow
     const std::size_t across_gap = cells_across(nozzle.mesh(), Vector2(0, 0.27e-3), Vector2(40e-6, 0.27e-3));
     std::printf("orifice %zu cells, %zu across the bore radius; nozzle %zu cells, %zu across the gap\n",
                 orifice.n_cells(), across_bore, nozzle.n_cells(), across_gap);
-    EXPECT_GE(across_bore, 30u);
-    EXPECT_GE(across_gap, 20u);
+    EXPECT_CHECK_AT_LEAST("cells across the bore radius", double(across_bore), 30, "issue 5");
+    EXPECT_CHECK_AT_LEAST("cells across the gap at 40 um", double(across_gap), 20, "issue 5");
     for (unsigned int n : orifice.mesh().cell_n_points)
       ASSERT_EQ(n, 4u);
   }
@@ -78,7 +82,8 @@ namespace servodrift::flow
     const ValveDescription v = test::valve();
     const PilotClosedForms closed_forms(v, 40);
     PilotField orifice(v, PilotGeometry::fixed_orifice, pilot_field_case(v, 40));
-    for (double dp : {20e3, 100e3, 400e3}) // Re_0 = 110, 247, 493; continuation from one to the next
+    // continuation from one to the next
+    for (const auto &[dp, reynolds] : {std::pair{20e3, "110"}, std::pair{100e3, "247"}, std::pair{400e3, "493"}})
       {
         const PilotFieldResult r = orifice.solve(dp);
         const OrificeState e21 = closed_forms.fixed_orifice(dp);
@@ -86,7 +91,8 @@ namespace servodrift::flow
                     dp, r.reynolds_number, e21.reynolds_number, r.discharge_coefficient, e21.discharge_coefficient,
                     100 * (r.discharge_coefficient / e21.discharge_coefficient - 1), r.iterations);
         EXPECT_NEAR(r.reynolds_number / e21.reynolds_number, 1, 1e-12); // the same definition, E17
-        EXPECT_NEAR(r.discharge_coefficient / e21.discharge_coefficient, 1, 0.05);
+        EXPECT_CHECK_RELATIVE(std::string("fixed orifice C_d, laminar, Re_0 ") + reynolds, r.discharge_coefficient,
+                              e21.discharge_coefficient, 0.05, "Lichtarowicz E21");
         EXPECT_LT(orifice.solver().max_cell_imbalance(), 1e-8);
       }
   }
@@ -141,7 +147,7 @@ namespace servodrift::flow
     const PilotClosedForms closed_forms(v, T);
     PilotField orifice(v, PilotGeometry::fixed_orifice, pilot_field_case(v, T));
     std::vector<double> ratio;
-    for (double dp : {2.5e3, 1.03e6})
+    for (const auto &[dp, reynolds] : {std::pair{2.5e3, "0.2"}, std::pair{1.03e6, "4"}})
       {
         const PilotFieldResult r = orifice.solve(dp);
         const double creeping = closed_forms.creeping_fixed_orifice(dp).discharge_coefficient;
@@ -149,11 +155,12 @@ namespace servodrift::flow
         std::printf("cold orifice dp %.3g Pa: Re_0 %.3g, C_d %.5f, creeping limit %.5f (ratio %.4f), E21 %.5f\n", dp,
                     r.reynolds_number, r.discharge_coefficient, creeping, ratio.back(),
                     closed_forms.fixed_orifice(dp).discharge_coefficient);
-        EXPECT_NEAR(ratio.back(), 1, 0.06) << dp;
+        EXPECT_CHECK_RELATIVE(std::string("fixed orifice C_d at -55 degC, Re_0 ") + reynolds, r.discharge_coefficient,
+                              creeping, 0.06, "Sampson + Poiseuille");
       }
     RecordProperty("creeping_orifice_ratio_low_re", test::number(ratio[0]));
     RecordProperty("creeping_orifice_ratio_re_4", test::number(ratio[1]));
-    EXPECT_NEAR(ratio[1] / ratio[0], 1, 0.005);
+    EXPECT_CHECK_RELATIVE("C_d / creeping limit, Re_0 4 against 0.2", ratio[1], ratio[0], 0.005, "Re_0 0.2");
   }
 
   TEST(PilotField, ColdNozzleTendsToTheLubricationLimit)
@@ -188,7 +195,8 @@ namespace servodrift::flow
         if (gap == 20e-6)
           {
             const PilotFieldResult higher = nozzle->solve(4 * dp);
-            EXPECT_NEAR(higher.flow_rate / (4 * r.flow_rate), 1, 1e-3);
+            EXPECT_CHECK_RELATIVE("Q(4 dp) / 4 Q(dp), 20 um, 3.09 MPa", higher.flow_rate / (4 * r.flow_rate), 1, 1e-3,
+                                  "Stokes flow");
           }
         previous = std::move(nozzle);
       }
@@ -196,9 +204,9 @@ namespace servodrift::flow
     RecordProperty("lubrication_ratio_10um", test::number(ratio[0]));
     RecordProperty("lubrication_ratio_20um", test::number(ratio[1]));
     RecordProperty("lubrication_ratio_extrapolated", test::number(limit));
-    EXPECT_LT(ratio[0], 1);
-    EXPECT_LT(ratio[1], ratio[0]);
-    EXPECT_NEAR(limit, 1, 0.01);
+    EXPECT_CHECK_AT_MOST("Q/Q_lub at 10 um", ratio[0], 1, "lubrication limit");
+    EXPECT_CHECK_AT_MOST("Q/Q_lub at 20 um", ratio[1], ratio[0], "Q/Q_lub at 10 um");
+    EXPECT_CHECK_ABSOLUTE("Q/Q_lub extrapolated to h = 0", limit, 1, 0.01, "lubrication limit");
   }
 
   TEST(PilotField, RefusesClosedGapsAndReversedPressures)
@@ -227,7 +235,7 @@ namespace servodrift::flow
   // continuation from Re 2000 through 5000 and 1e4 to 2e4, the top of the issue's range. Tolerance
   // 5 % (the issue's; the correlation's own scatter is of that order). Measured -2.8, -3.5, -3.7 and
   // -3.7 %.
-  TEST(PilotField, FixedOrificeFollowsLichtarowiczWithKEpsilon)
+  SLOW_TEST(PilotField, FixedOrificeFollowsLichtarowiczWithKEpsilon)
   {
     ValveDescription v = test::valve();
     v.pilot.field_cavitation = false;
@@ -248,7 +256,8 @@ namespace servodrift::flow
         std::printf("fixed orifice k-epsilon Re_0 %.0f: C_d %.4f, Lichtarowicz %.4f (%+.2f %%), wall y+ <= %.1f, %u iterations\n",
                     r.reynolds_number, r.discharge_coefficient, e21, 100 * (r.discharge_coefficient / e21 - 1),
                     r.max_wall_y_plus, r.iterations);
-        EXPECT_NEAR(r.discharge_coefficient / e21, 1, 0.05);
+        EXPECT_CHECK_RELATIVE("fixed orifice C_d, two-layer k-epsilon, Re_0 " + format_number(Re),
+                              r.discharge_coefficient, e21, 0.05, "Lichtarowicz E21");
         previous = std::move(orifice);
       }
   }
@@ -316,7 +325,8 @@ namespace servodrift::flow
     const double span = v.operating.supply_pressure - v.operating.return_pressure;
     const double orifice_conductance =
       closed_forms.fixed_orifice(span / 2).discharge_coefficient * units::pi * std::pow(g.fixed_orifice_diameter, 2) / 4;
-    std::vector<double> force, bridge_force, e23;
+    std::vector<double> force, bridge_force, e23, discharge, e22;
+    double momentum_error = 0, smallest_beta = 1e300;
     std::unique_ptr<PilotField> previous;
     for (double gap : {40e-6, 30e-6, 50e-6})
       {
@@ -339,21 +349,41 @@ namespace servodrift::flow
                     100 * ((r.flapper_force - r.land_force) / r.jet_force - 1),
                     100 * ((r.flapper_force - r.land_force) / uniform - 1), beta, control * 1e-6, int(r.cavitating),
                     r.iterations);
-        EXPECT_NEAR((r.flapper_force - r.land_force) / r.jet_force, 1, 0.01);
-        EXPECT_GE(beta, 1.0);
+        // the worst over the gaps (a NaN sticks)
+        const double error = std::abs((r.flapper_force - r.land_force) / r.jet_force - 1);
+        if (!(error <= momentum_error) && !std::isnan(momentum_error))
+          momentum_error = error;
+        if (!(beta >= smallest_beta) && !std::isnan(smallest_beta))
+          smallest_beta = beta;
         if (gap == 40e-6)
           {
-            EXPECT_NEAR(r.discharge_coefficient / e.discharge_coefficient, 1, 0.10);
+            EXPECT_CHECK_RELATIVE("nozzle C_dn at the null (40 um, 10.4 MPa)", r.discharge_coefficient,
+                                  e.discharge_coefficient, 0.10, "E22");
             previous = std::move(nozzle);
           }
         force.push_back(r.flapper_force);
         e23.push_back(e.flapper_force);
+        discharge.push_back(r.discharge_coefficient);
+        e22.push_back(e.discharge_coefficient);
         bridge_force.push_back(r.flapper_force * control / dp);
       }
+    // the gaps in the order 30, 40, 50 um
+    const auto in_gap_order = [](const std::vector<double> &x) {
+      return test::shown(x[1]) + ", " + test::shown(x[0]) + ", " + test::shown(x[2]);
+    };
+    EXPECT_CHECK_AT_MOST("flapper minus land force against the exit's axial momentum, 30-50 um (relative)",
+                         momentum_error, 0.01, "C12 (1)");
+    EXPECT_CHECK_AT_LEAST("momentum-flux factor beta of the exit profile, 30-50 um", smallest_beta, 1.0,
+                          "a flat profile");
+    test::record_check("nozzle C_dn at 30, 50 um, 10.4 MPa", "E22: " + test::shown(e22[1]) + ", " + test::shown(e22[2]),
+                       "- (reported)", test::shown(discharge[1]) + ", " + test::shown(discharge[2]));
     // at fixed dp: the sign of E23's trend
     EXPECT_LT(force[1], force[0]);
     EXPECT_LT(force[0], force[2]);
     EXPECT_LT(e23[1], e23[0]);
+    test::record_check("flapper force at 30, 40, 50 um, 10.4 MPa [N]",
+                       "grows with h as E23's (E23: " + in_gap_order(e23) + ", C12 (2))", "strict",
+                       in_gap_order(force));
     // in the bridge: falls as the gap opens, odd to first order
     const double F0 = bridge_force[0], F_closing = bridge_force[1], F_opening = bridge_force[2];
     EXPECT_GT(F_closing, F0);
@@ -361,7 +391,10 @@ namespace servodrift::flow
     const double odd = F_closing - F_opening, even = F_closing + F_opening - 2 * F0;
     std::printf("bridge force change: odd part %.4f N (K_f %.0f N/m), even part %.4f N (ratio %.3f)\n", odd,
                 odd / 20e-6, even, even / odd);
-    EXPECT_LT(std::abs(even / odd), 0.25);
+    test::record_check("force in the orifice-nozzle bridge, 30, 40, 50 um [N]", "falls as the gap opens", "strict",
+                       in_gap_order(bridge_force) + " (K_f " + test::shown(odd / 20e-6 * 1e-3) + " kN/m)");
+    EXPECT_CHECK_AT_MOST("bridge force change: |even part / odd part|", std::abs(even / odd), 0.25,
+                         "odd in x_f to first order");
   }
 
   // The mass balance with cavitation (issue 27): the pressure correction balances the mixture's mass
@@ -406,14 +439,17 @@ namespace servodrift::flow
                 "(at the liquid's density %.2e); net %.2e (of the throughput)\n",
                 std::count(fields.cavitating.begin(), fields.cavitating.end(), 1), liquid_cells, cavitating_cells,
                 cavitating_liquid_density, solver.net_imbalance());
-    EXPECT_LT(liquid_cells, 1e-9);
+    EXPECT_CHECK_AT_MOST("largest mixture imbalance of a liquid cell (of the throughput)", liquid_cells, 1e-9,
+                         "round-off");
+    test::record_check("largest mixture imbalance of a cavitating cell (of the throughput)",
+                       "not in the convergence test (a known limit)", "- (reported)", test::shown(cavitating_cells));
     EXPECT_DOUBLE_EQ(solver.max_cell_imbalance(), std::max(liquid_cells, cavitating_cells));
     EXPECT_GT(cavitating_liquid_density, 5 * cavitating_cells);
   }
 
   // Mesh convergence at the cases' conditions: resolution 0.7, 1 and 1.4 (cell counts 1 : 2 : 4);
   // between the two finest C_d and force change by less than 1 % (the issue's tolerance).
-  TEST(PilotField, MeshConvergence)
+  SLOW_TEST(PilotField, MeshConvergence)
   {
     ValveDescription v = test::valve();
     v.flow_solver.max_iterations = 15000; // SIMPLEC's rate falls with the cell count: the finest needs about 7000
@@ -425,9 +461,12 @@ namespace servodrift::flow
         std::printf("resolution %.1f: nozzle C_dn %.5f, F %.5f N; orifice C_d %.5f\n", resolution,
                     nozzle.back().discharge_coefficient, nozzle.back().flapper_force, orifice.back().discharge_coefficient);
       }
-    EXPECT_LT(test::relative(nozzle[1].discharge_coefficient, nozzle[2].discharge_coefficient), 0.01);
-    EXPECT_LT(test::relative(nozzle[1].flapper_force, nozzle[2].flapper_force), 0.01);
-    EXPECT_LT(test::relative(orifice[1].discharge_coefficient, orifice[2].discharge_coefficient), 0.01);
+    EXPECT_CHECK_RELATIVE("nozzle C_dn at the null, resolution 1", nozzle[1].discharge_coefficient,
+                          nozzle[2].discharge_coefficient, 0.01, "resolution 1.4");
+    EXPECT_CHECK_RELATIVE("flapper force at the null, resolution 1 [N]", nozzle[1].flapper_force,
+                          nozzle[2].flapper_force, 0.01, "resolution 1.4");
+    EXPECT_CHECK_RELATIVE("orifice C_d, laminar, Re_0 493, resolution 1", orifice[1].discharge_coefficient,
+                          orifice[2].discharge_coefficient, 0.01, "resolution 1.4");
   }
 
 
@@ -444,9 +483,12 @@ namespace servodrift::flow
                 100 * (nozzle_wide.discharge_coefficient / nozzle.discharge_coefficient - 1),
                 100 * (nozzle_wide.flapper_force / nozzle.flapper_force - 1),
                 100 * (orifice_wide.discharge_coefficient / orifice.discharge_coefficient - 1));
-    EXPECT_LT(test::relative(nozzle_wide.discharge_coefficient, nozzle.discharge_coefficient), 0.005);
-    EXPECT_LT(test::relative(nozzle_wide.flapper_force, nozzle.flapper_force), 0.005);
-    EXPECT_LT(test::relative(orifice_wide.discharge_coefficient, orifice.discharge_coefficient), 0.005);
+    EXPECT_CHECK_RELATIVE("nozzle C_dn at the null, outlet radius 6 land radii", nozzle_wide.discharge_coefficient,
+                          nozzle.discharge_coefficient, 0.005, "4 land radii");
+    EXPECT_CHECK_RELATIVE("flapper force at the null, outlet radius 6 land radii [N]", nozzle_wide.flapper_force,
+                          nozzle.flapper_force, 0.005, "4 land radii");
+    EXPECT_CHECK_RELATIVE("orifice C_d, laminar, Re_0 493, plenum 9 bore radii", orifice_wide.discharge_coefficient,
+                          orifice.discharge_coefficient, 0.005, "6 bore radii");
   }
 
 

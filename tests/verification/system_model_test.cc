@@ -2,15 +2,18 @@
 // of model.md (C4, 2.5-2.7), the spool regimes, saturation, table ranges and the drift maps.
 #include "common/error.h"
 #include "common/units.h"
+#include "system/stage_coefficients.h"
 #include "system/system_stage.h"
 #include "system/valve_model.h"
+#include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
-
-#include <cmath>
+#include <limits>
+#include <vector>
 
 using namespace servodrift;
 using namespace servodrift::system;
@@ -37,18 +40,31 @@ namespace
     static const Valve v({"Sweeps/Motor angles=-0.4, -0.3, -0.2, -0.15, -0.1, -0.05, 0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4"});
     return v;
   }
+
+  /// The larger (smaller) of two values, NaN winning: the worst case of a loop keeps a failed point failed.
+  double larger(double a, double b)
+  {
+    return std::isnan(a) || std::isnan(b) ? std::numeric_limits<double>::quiet_NaN() : std::max(a, b);
+  }
+  double smaller(double a, double b)
+  {
+    return std::isnan(a) || std::isnan(b) ? std::numeric_limits<double>::quiet_NaN() : std::min(a, b);
+  }
 } // namespace
 
 TEST(SystemModel, SymmetricValveSitsAtNull)
 {
   const auto &m = rv1().model;
-  for (double T : {40.0, 80.0, 120.0})
+  const std::vector<double> temperatures = {40.0, 80.0, 120.0};
+  double angle = 0, pressure_difference = 0, residual = 0;
+  std::vector<double> brake_pressure, expected_brake_pressure;
+  for (double T : temperatures)
     {
       const OperatingPoint op = m.solve(T, 0.0, Offsets{});
       EXPECT_EQ(op.flapper, FlapperState::free);
-      EXPECT_LT(std::abs(op.angle), 1e-14) << T;              // rad
+      angle = larger(angle, std::abs(op.angle));
       EXPECT_LT(std::abs(op.flapper_displacement), 1e-15) << T; // m
-      EXPECT_LT(std::abs(op.control_pressure_difference()), 1e-6) << T; // Pa, of 10.8 MPa
+      pressure_difference = larger(pressure_difference, std::abs(op.control_pressure_difference())); // of 10.8 MPa
       // At zero control pressure the spool rests on its preload, vented. The supply land's laminar
       // leakage (E36: pi d_v c_r^3 (p_s - p_B)/(12 mu (x_ov - x_v))) leaves through the open return
       // edge, whose flow is laminar at this rate (E20 with tanh z ~ z: Q = 8 C_dv W o^2 dp/(mu
@@ -59,29 +75,43 @@ TEST(SystemModel, SymmetricValveSitsAtNull)
       const double laminar_edge = 8 * 0.61 * 15.708e-3 * o * o / 1000;
       const double dp_B = leak * (p_s - p_r) / (leak + laminar_edge); // leak (p_s - p_B) = edge (p_B - p_r)
       // tanh z = z (1 - z^2/3 + ...) with z = 2 lambda/lambda_c from 0.07 (40 degC) to 0.25 (120 degC)
-      EXPECT_LT(relative(op.spool.brake_pressure - p_r, dp_B), 0.03) << T;
+      brake_pressure.push_back(op.spool.brake_pressure - p_r);
+      expected_brake_pressure.push_back(dp_B);
       const double A_fb = units::pi * 16e-6 / 4 * std::pow(1 + 10.2e-6 * (T - 40), 2);
       // E35 at rest: k_s x_v = -F_s0 - A_fb (p_B - p_r) + the return edge's flow force (about 1e-4 N)
       const double flow_force = m.equations(T).metering(x, op.spool.brake_pressure).return_force;
       EXPECT_LT(flow_force, 2e-4);
-      EXPECT_LT(std::abs(1e3 * x + 0.33 + A_fb * (op.spool.brake_pressure - p_r) - flow_force), 1e-12) << T;
+      residual = larger(residual, std::abs(1e3 * x + 0.33 + A_fb * (op.spool.brake_pressure - p_r) - flow_force));
     }
+  EXPECT_CHECK_AT_MOST("|theta| at i = 0, 40/80/120 degC [rad]", angle, 1e-14, "symmetry: theta = 0");
+  EXPECT_CHECK_AT_MOST("|p_L - p_R| at i = 0, 40/80/120 degC [Pa]", pressure_difference, 1e-6, "symmetry: p_L = p_R");
+  for (std::size_t k = 0; k < temperatures.size(); ++k)
+    EXPECT_CHECK_RELATIVE("spool vented at null: p_B - p_r at " + format_number(temperatures[k]) + " degC [Pa]",
+                          brake_pressure[k], expected_brake_pressure[k], 0.03,
+                          "supply land's leakage through the laminar return edge");
+  EXPECT_CHECK_AT_MOST("E35 residual of the spool at rest, 40/80/120 degC [N]", residual, 1e-12, "force balance");
 }
 
 TEST(SystemModel, PilotGainAndStiffnessOfModelMd)
 {
   const auto &m = rv1().model;
   // C4: blocked pressure gain at null 0.541 / 0.523 MPa/um at 40 / 120 degC (3 digits)
-  for (const auto &[T, gain] : {std::pair{40.0, 0.541e12}, std::pair{120.0, 0.523e12}})
+  for (const auto &[T, gain] : {std::pair{40.0, 0.541}, std::pair{120.0, 0.523}})
     {
       const double dx = 0.01e-6;
       const auto plus = m.bridge(T, dx), minus = m.bridge(T, -dx);
       const double g = ((plus.left_pressure - plus.right_pressure) - (minus.left_pressure - minus.right_pressure)) / (2 * dx);
-      EXPECT_LT(relative(g, gain), 2e-3) << T;
+      EXPECT_CHECK_RELATIVE("blocked pressure gain at null, " + format_number(T) + " degC [MPa/um]", g * 1e-12, gain,
+                            2e-3, "C4");
     }
-  // 2.6: K_f = 5.95e4 (40) and 5.72e4 (120) N/m; 1.12: K_a - K_m + r^2 K_f = 16.0 N*m/rad at 40 degC
-  EXPECT_LT(relative(m.flow_force_stiffness(40), 5.95e4), 0.005);
-  EXPECT_LT(relative(m.flow_force_stiffness(120), 5.72e4), 0.005);
+  // 2.6: K_f = 5.95e4 (40) and 5.72e4 (120) N/m; 1.12: K_a - K_m + r^2 K_f = 16.0 N*m/rad at 40 degC (reported, not
+  // asserted: model.md sums rounded figures, 21.4 - 11.4 + 6.0)
+  EXPECT_CHECK_RELATIVE("flow-force stiffness K_f at null, 40 degC [kN/m]", 1e-3 * m.flow_force_stiffness(40), 59.5,
+                        0.005, "model.md 2.6");
+  EXPECT_CHECK_RELATIVE("flow-force stiffness K_f at null, 120 degC [kN/m]", 1e-3 * m.flow_force_stiffness(120), 57.2,
+                        0.005, "model.md 2.6");
+  test::record_check("static stability K_a - K_m + r^2 K_f, small-signal K_m, 40 degC [N m/rad]",
+                     "16.0 (model.md 1.12)", "report only", test::shown(stage_coefficients(m, 40).net_stiffness));
   // the flapper force difference is odd in x_f for the symmetric pilot
   const auto a = m.bridge(40, 7e-6), b = m.bridge(40, -7e-6);
   EXPECT_LT(std::abs((a.left_force - a.right_force) + (b.left_force - b.right_force)), 1e-9 * (a.left_force - a.right_force));
@@ -93,14 +123,16 @@ TEST(SystemModel, RatedOperatingPoint)
   // 10 MPa above return. E35 must hold exactly in the lap.
   const OperatingPoint op = rv1().model.solve(40, 0.020, Offsets{});
   EXPECT_EQ(op.flapper, FlapperState::free);
-  EXPECT_LT(relative(op.flapper_displacement, 11.9e-6), 0.005);
+  EXPECT_CHECK_RELATIVE("flapper displacement x_f at 20 mA, 40 degC [um]", 1e6 * op.flapper_displacement, 11.9, 0.005,
+                        "model.md 2.5");
   EXPECT_EQ(op.spool.state, SpoolState::regulating);
   const double A_v = units::pi * 25e-6 / 4, A_fb = units::pi * 16e-6 / 4; // at T0: no expansion
   const double residual = A_v * op.control_pressure_difference() - A_fb * (op.spool.brake_pressure - 0.4e6) -
                           1e3 * op.spool.displacement - 0.33;
-  EXPECT_LT(std::abs(residual), 1e-9);
+  EXPECT_CHECK_AT_MOST("E35 residual in the lap at 20 mA, 40 degC [N]", std::abs(residual), 1e-9, "force balance");
   EXPECT_LT(std::abs(op.spool.displacement), 20e-6);
-  EXPECT_LT(relative(op.spool.brake_pressure - 0.4e6, 10.0e6), 0.015);
+  EXPECT_CHECK_RELATIVE("rated brake pressure p_B - p_r at 20 mA, 40 degC [MPa]",
+                        1e-6 * (op.spool.brake_pressure - 0.4e6), 10.0, 0.015, "model.md 2.7");
 }
 
 TEST(SystemModel, SpoolRegimes)
@@ -108,27 +140,31 @@ TEST(SystemModel, SpoolRegimes)
   const auto &m = rv1().model;
   // past the stroke limit the stop's stiffness (1e8 N/m) holds the net force: 19.56 N at dp_c = -1 MPa
   EXPECT_EQ(m.spool(40, -1e6).state, SpoolState::on_negative_stop);
-  EXPECT_NEAR(m.spool(40, -1e6).displacement, -0.4e-3 - (19.635 - 0.4 + 0.33) / 1e8, 1e-10);
+  EXPECT_CHECK_ABSOLUTE("spool past the negative stop at dp_c = -1 MPa: x_v [um]", 1e6 * m.spool(40, -1e6).displacement,
+                        1e6 * (-0.4e-3 - (19.635 - 0.4 + 0.33) / 1e8), 1e-4, "stroke limit + force/stiffness");
   EXPECT_EQ(m.spool(40, 0).state, SpoolState::vented);
   EXPECT_EQ(m.spool(40, 6e6).state, SpoolState::regulating);
   // open to supply: A_v dp_c between A_fb (p_s - p_r) + F_s0 + k_s x_ov and ... + k_s x_max
   const double A_v = units::pi * 25e-6 / 4, A_fb = units::pi * 16e-6 / 4, edge = A_fb * 20.6e6 + 0.33;
   EXPECT_EQ(m.spool(40, (edge + 1e3 * 0.2e-3) / A_v).state, SpoolState::at_supply);
   // p_s less what the return land's leakage takes through the open supply edge (about 1 kPa)
-  EXPECT_NEAR(m.spool(40, (edge + 1e3 * 0.2e-3) / A_v).brake_pressure, 21e6, 2e3);
+  EXPECT_CHECK_ABSOLUTE("p_B open to supply [MPa]", 1e-6 * m.spool(40, (edge + 1e3 * 0.2e-3) / A_v).brake_pressure, 21,
+                        2e-3, "p_s");
   EXPECT_EQ(m.spool(40, 14e6).state, SpoolState::on_positive_stop);
   // continuity at the lap edges: the brake pressure is a continuous, rising function of dp_c
-  double last = -1;
+  double last = -1, step = std::numeric_limits<double>::infinity(), slope = 0;
   for (double dp = -2e6; dp <= 20.6e6; dp += 1e4)
     {
       const double p = m.spool(40, dp).brake_pressure;
-      EXPECT_GE(p, last);
+      step = smaller(step, p - last);
       if (last >= 0)
-        {
-          EXPECT_LT(p - last, 1e4 * 1.5625 * 1.0001); // at most A_v/A_fb per Pa
-        }
+        slope = larger(slope, (p - last) / 1e4);
       last = p;
     }
+  EXPECT_CHECK_AT_LEAST("smallest rise of p_B over 10 kPa of dp_c, -2 to 20.6 MPa [Pa]", step, 0.0, "p_B rising");
+  // at most A_v/A_fb per Pa
+  EXPECT_CHECK_AT_MOST("largest slope dp_B/dp_c, -2 to 20.6 MPa, over A_v/A_fb - 1", slope / 1.5625 - 1, 1e-4,
+                       "A_v/A_fb = 1.5625");
 }
 
 TEST(SystemModel, SaturatedFlapperIsAStateNotAFailure)
@@ -144,11 +180,16 @@ TEST(SystemModel, SaturatedFlapperIsAStateNotAFailure)
   // K_a (theta_c - theta_s)/r^2 / 1e8 = 0.3 um; E29 at rest holds with the contact torque
   const double depth = -40e-6 - op.flapper_displacement;
   EXPECT_GT(depth, 0.0);
-  EXPECT_LT(depth, 1e-6);
+  EXPECT_CHECK_AT_MOST("flapper pressed on the right nozzle: depth into the contact [um]", 1e6 * depth, 1.0,
+                       "force/K_c, K_c = 1e8 N/m");
   const ValveEquations eq = m.equations(40, o);
-  EXPECT_LT(std::abs(eq.net_torque(op.angle, 0.0, op.bridge.left_pressure, op.bridge.right_pressure, 0.0)), 1e-12);
+  EXPECT_CHECK_AT_MOST("E29 net torque at rest on the nozzle [N m]",
+                       std::abs(eq.net_torque(op.angle, 0.0, op.bridge.left_pressure, op.bridge.right_pressure, 0.0)),
+                       1e-12, "torque balance with the contact");
   EXPECT_DOUBLE_EQ(op.bridge.right_gap, 0.0);
-  EXPECT_LT(relative(op.bridge.right_pressure, 21e6), 1e-9); // no flow: the cavity sees the supply
+  // no flow: the cavity sees the supply
+  EXPECT_CHECK_RELATIVE("control pressure behind the closed nozzle [MPa]", 1e-6 * op.bridge.right_pressure, 21, 1e-9,
+                        "p_s");
   EXPECT_EQ(op.spool.state, SpoolState::on_negative_stop);  // p_L - p_R is about -17 MPa
   EXPECT_TRUE(std::isfinite(op.spool.brake_pressure));
   o.spring_tube_rest_angle = +1.0 * units::degree;
@@ -167,7 +208,10 @@ TEST(SystemModel, QueryBeyondTheTablesFailsClearly)
     }
   catch (const TableRangeError &e)
     {
-      EXPECT_NE(std::string(e.what()).find("Sweeps/Motor angles"), std::string::npos) << e.what();
+      const bool named = std::string(e.what()).find("Sweeps/Motor angles") != std::string::npos;
+      EXPECT_TRUE(named) << e.what();
+      test::record_check("query beyond the torque table", "refused naming `Sweeps/Motor angles`", "-",
+                         named ? "refused, named" : "refused, not named");
     }
 }
 
@@ -178,13 +222,16 @@ TEST(SystemModel, NullShiftCurrentRestoresNull)
   o.magnetic_null = 0.01 * units::degree;
   const auto i = m.null_shift_current(80, o);
   ASSERT_TRUE(i.has_value());
-  EXPECT_LT(std::abs(m.solve(80, *i, o).control_pressure_difference()), 1.0); // Pa
+  EXPECT_CHECK_AT_MOST("|p_L - p_R| at the null-shift current, theta_m = 0.01 deg, 80 degC [Pa]",
+                       std::abs(m.solve(80, *i, o).control_pressure_difference()), 1.0, "null restored");
   // E29 linearised: K_t i = K_m theta_m
-  EXPECT_LT(relative(*i, 11.0 * 0.01 * units::degree / 0.94), 0.05);
+  EXPECT_CHECK_RELATIVE("null-shift current, theta_m = 0.01 deg, 80 degC [mA]", 1e3 * *i,
+                        1e3 * 11.0 * 0.01 * units::degree / 0.94, 0.05, "E29 linearised: K_m theta_m/K_t");
 }
 
 TEST(DriftMap, DeviationsVanishAtTheirReference)
 {
+  double displacement = 0, pressure = 0, current = 0, shift = 0;
   for (const char *nulling : {"nulled-at-reference", "as-assembled"})
     {
       const auto v = test::valve({std::string("Offsets/Nulling=") + nulling,
@@ -199,17 +246,22 @@ TEST(DriftMap, DeviationsVanishAtTheirReference)
             const bool at_reference = m.nulled_at_reference ? m.temperatures[t] == 40 : m.deviation_angles[a] == 0;
             if (at_reference)
               {
-                EXPECT_LT(std::abs(p.spool_displacement_deviation), 1e-15) << nulling;
-                EXPECT_LT(std::abs(p.brake_pressure_deviation), 1e-6) << nulling;
+                displacement = larger(displacement, std::abs(p.spool_displacement_deviation));
+                pressure = larger(pressure, std::abs(p.brake_pressure_deviation));
               }
             if (m.nulled_at_reference && m.temperatures[t] == 40)
               {
                 ASSERT_TRUE(p.null_shift_current.has_value());
-                EXPECT_LT(std::abs(*p.null_shift_current), 1e-12); // nulled: no current needed at T0
-                EXPECT_LT(std::abs(p.null_pressure_shift), 1e-3);
+                current = larger(current, std::abs(*p.null_shift_current)); // nulled: no current needed at T0
+                shift = larger(shift, std::abs(p.null_pressure_shift));
               }
           }
     }
+  const std::string reference = "zero at T0 (nulled) or theta_d = 0 (as assembled)";
+  EXPECT_CHECK_AT_MOST("|x_v deviation| at its reference, both nullings [m]", displacement, 1e-15, reference);
+  EXPECT_CHECK_AT_MOST("|p_B deviation| at its reference, both nullings [Pa]", pressure, 1e-6, reference);
+  EXPECT_CHECK_AT_MOST("|null-shift current| at T0, nulled [A]", current, 1e-12, "nulled at T0");
+  EXPECT_CHECK_AT_MOST("|null pressure shift| at T0, nulled [Pa]", shift, 1e-3, "nulled at T0");
 }
 
 TEST(DriftMap, OddInTheDeviationAngleForTheSymmetricValve)
@@ -217,6 +269,7 @@ TEST(DriftMap, OddInTheDeviationAngleForTheSymmetricValve)
   // At i = 0 the pilot and the motor are symmetric: the null pressure shift, the null-shift current
   // and the flapper position change sign with theta_d. (The spool is not symmetric: its preload
   // holds it at -F_s0/k_s; nor is the rated-current point.)
+  double pressure = 0, current = 0, flapper = 0;
   for (const char *nulling : {"nulled-at-reference", "as-assembled"})
     for (const char *target : {"magnetic-null", "spring-tube-rest-angle"})
       {
@@ -230,12 +283,18 @@ TEST(DriftMap, OddInTheDeviationAngleForTheSymmetricValve)
             // to the torque balance's tolerance: 1e-13 of its bracket (the nozzle contacts, 8e-3 rad)
             // puts x_f within 1e-17 m, which the pilot gain of 0.54 MPa/um makes 5e-6 Pa
             const double scale = std::max(std::abs(plus.null_pressure_shift), 1.0);
-            EXPECT_LT(std::abs(plus.null_pressure_shift + minus.null_pressure_shift), 1e-7 * scale + 1e-5)
-              << nulling << target;
-            EXPECT_LT(std::abs(*plus.null_shift_current + *minus.null_shift_current), 1e-12) << nulling << target;
-            EXPECT_LT(std::abs(plus.zero_current.flapper_displacement + minus.zero_current.flapper_displacement), 1e-15);
+            pressure =
+              larger(pressure, std::abs(plus.null_pressure_shift + minus.null_pressure_shift) / (1e-7 * scale + 1e-5));
+            current = larger(current, std::abs(*plus.null_shift_current + *minus.null_shift_current));
+            const double x_f = plus.zero_current.flapper_displacement + minus.zero_current.flapper_displacement;
+            flapper = larger(flapper, std::abs(x_f));
           }
       }
+  const std::string reference = "odd in theta_d = +-0.004 deg";
+  EXPECT_CHECK_AT_MOST("null pressure shift: |dp(+) + dp(-)| / (1e-7 max(|dp|, 1 Pa) + 1e-5 Pa)", pressure, 1.0,
+                       reference);
+  EXPECT_CHECK_AT_MOST("null-shift current: |i(+) + i(-)| [A]", current, 1e-12, reference);
+  EXPECT_CHECK_AT_MOST("flapper position at i = 0: |x_f(+) + x_f(-)| [m]", flapper, 1e-15, reference);
 }
 
 TEST(DriftMap, PaperPresetFlowForceFollowsThePaperTable)
@@ -245,8 +304,11 @@ TEST(DriftMap, PaperPresetFlowForceFollowsThePaperTable)
   const Valve paper({"Pilot stage/Flapper force law=paper-table", "Sweeps/Table temperatures=40, 50, 60, 70, 80, 90, 100, 110, 120",
                      "Sweeps/Drift temperatures=40, 120"});
   const double expected[] = {57.5e3, 29.5e3, 15.2e3, 21.0e3, 25.5e3, 28.9e3, 31.4e3, 33.2e3, 34.5e3};
+  double error = 0;
   for (int k = 0; k < 9; ++k)
-    EXPECT_LT(relative(paper.model.flow_force_stiffness(40 + 10 * k), expected[k]), 0.01) << 40 + 10 * k;
+    error = larger(error, relative(paper.model.flow_force_stiffness(40 + 10 * k), expected[k]));
+  EXPECT_CHECK_AT_MOST("paper preset: K_f(T) at 40, 50 ... 120 degC, largest relative difference", error, 0.01,
+                       "the paper's table, 57.5 ... 34.5 kN/m");
 }
 
 TEST(DriftMap, FlowForceFitE28)
@@ -254,8 +316,8 @@ TEST(DriftMap, FlowForceFitE28)
   const auto v = test::valve({"Sweeps/Deviation angles=0"});
   const auto r = system::compute(v, test::write_reduced_order_tables(v));
   EXPECT_EQ(r.flow_force_fit.coefficients.size(), 5u);
-  EXPECT_GT(r.flow_force_fit.r_squared, 0.9999);
-  EXPECT_LT(relative(r.flow_force_fit({40}), 5.95e4), 0.005);
+  EXPECT_CHECK_AT_MOST("E28 quartic fit of K_f(T): 1 - R^2", 1 - r.flow_force_fit.r_squared, 1e-4, "R^2 > 0.9999");
+  EXPECT_CHECK_RELATIVE("E28 fit of K_f at 40 degC [kN/m]", 1e-3 * r.flow_force_fit({40}), 59.5, 0.005, "model.md 2.6");
 }
 
 TEST(DriftMap, BrakePressureDeviationIsOddToFirstOrder)
@@ -273,7 +335,8 @@ TEST(DriftMap, BrakePressureDeviationIsOddToFirstOrder)
     return (plus + minus) / (plus - minus);
   };
   const double r1 = ratio(0.004), r2 = ratio(0.002);
-  EXPECT_NEAR(r1 / r2, 2.0, 0.2) << r1 << " " << r2;
+  EXPECT_CHECK_ABSOLUTE("delta p_B at 20 mA, 120 degC: even/odd part at 0.004 deg over that at 0.002 deg", r1 / r2, 2.0,
+                        0.2, "the even part O(theta_d^2)");
 }
 
 TEST(ModelForm, SpreadOfAlternativeTables)
@@ -321,8 +384,7 @@ TEST(DriftMap, BetweenTableTemperaturesAsFromTablesEvery5K)
   // (12 from -55 to 135 degC, closer at the cold end) against tables every 5 K, at each of the 39
   // drift temperatures and every deviation angle: the null-shift current within 1e-3 % of rated,
   // the brake pressure at the rated current within 1 % of p_s - p_r and the spool displacement at
-  // i = 0 within 1 % of its stroke. The largest differences are recorded (doc/validation.md,
-  // "Between table temperatures").
+  // i = 0 within 1 % of its stroke. The largest differences are the checks recorded.
   const std::string every_5K = "-55, -50, -45, -40, -35, -30, -25, -20, -15, -10, -5, 0, 5, 10, 15, 20, 25, 30, 35, "
                                "40, 45, 50, 55, 60, 65, 70, 75, 80, 85, 90, 95, 100, 105, 110, 115, 120, 125, 130, 135";
   const auto coarse = test::valve({});
@@ -345,10 +407,11 @@ TEST(DriftMap, BetweenTableTemperaturesAsFromTablesEvery5K)
       displacement = std::max(displacement, std::abs(a.points[k].zero_current.spool.displacement -
                                                      b.points[k].zero_current.spool.displacement) / stroke);
     }
-  RecordProperty("null_shift_difference_percent_of_rated", test::number(100 * shift));
-  RecordProperty("brake_pressure_difference_percent_of_span", test::number(100 * pressure));
-  RecordProperty("spool_displacement_difference_percent_of_stroke", test::number(100 * displacement));
-  EXPECT_LT(shift, 1e-5);
-  EXPECT_LT(pressure, 0.01);
-  EXPECT_LT(displacement, 0.01);
+  const std::string reference = "tables every 5 K";
+  EXPECT_CHECK_AT_MOST("null-shift current, 12 table temperatures against 39 [% of rated]", 100 * shift, 1e-3,
+                       reference);
+  EXPECT_CHECK_AT_MOST("p_B at the rated current, 12 table temperatures against 39 [% of p_s - p_r]", 100 * pressure,
+                       1.0, reference);
+  EXPECT_CHECK_AT_MOST("x_v at i = 0, 12 table temperatures against 39 [% of the stroke]", 100 * displacement, 1.0,
+                       reference);
 }

@@ -1,12 +1,12 @@
 // Reduced-order torque motor (E2-E10) against model.md 2.2 / C1 / C2 and the closed forms E4, E5.
 #include "common/units.h"
 #include "common/torque_motor_circuit.h"
+#include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-
+#include <algorithm>
 #include <cmath>
 
 using namespace servodrift;
@@ -36,10 +36,10 @@ TEST(TorqueMotorCircuit, IssueFigures)
   // each within 1 %. K_m is the secant T(0.1 deg)/0.1 deg (C1).
   const auto v = test::valve();
   const TorqueMotorCircuit c40(v, 40), c120(v, 120);
-  EXPECT_LT(relative(c40.torque(tenth, 0) / tenth, 11.36), 0.01);
-  EXPECT_LT(relative(c120.torque(tenth, 0) / tenth, 10.87), 0.01);
-  EXPECT_LT(relative(c40.torque(tenth, 0), 0.01982), 0.01);
-  EXPECT_LT(relative(slope_in_current(c40), 0.955), 0.01);
+  EXPECT_CHECK_RELATIVE("K_m secant (C1) at 40 degC [N m/rad]", c40.torque(tenth, 0) / tenth, 11.36, 0.01, "issue 2");
+  EXPECT_CHECK_RELATIVE("K_m secant (C1) at 120 degC [N m/rad]", c120.torque(tenth, 0) / tenth, 10.87, 0.01, "issue 2");
+  EXPECT_CHECK_RELATIVE("T(0.1 deg) at 40 degC [N m]", c40.torque(tenth, 0), 0.01982, 0.01, "issue 2");
+  EXPECT_CHECK_RELATIVE("K_t at 40 degC [N m/A]", slope_in_current(c40), 0.955, 0.01, "issue 2");
 }
 
 TEST(TorqueMotorCircuit, PrintedInputsReproduceC1C2)
@@ -48,21 +48,24 @@ TEST(TorqueMotorCircuit, PrintedInputsReproduceC1C2)
   // K_t = 0.954 (3 digits); C1: small-signal K_m = 11.23 / 10.75 (4 digits: 5e-4).
   const auto v = test::valve();
   const TorqueMotorCircuit c40(v, 40), c120(v, 120);
-  EXPECT_LT(relative(c40.torque(tenth, 0), 0.019772), 3e-5);
-  EXPECT_LT(relative(c120.torque(tenth, 0), 0.018926), 3e-5);
-  EXPECT_LT(relative(slope_in_current(c40), 0.954), 6e-4);
-  EXPECT_LT(relative(slope_in_angle(c40), 11.23), 5e-4);
-  EXPECT_LT(relative(slope_in_angle(c120), 10.75), 5e-4);
+  EXPECT_CHECK_RELATIVE("T(0.1 deg) at 40 degC [N m]", c40.torque(tenth, 0), 0.019772, 3e-5, "C2");
+  EXPECT_CHECK_RELATIVE("T(0.1 deg) at 120 degC [N m]", c120.torque(tenth, 0), 0.018926, 3e-5, "C2");
+  EXPECT_CHECK_RELATIVE("K_t at 40 degC [N m/A]", slope_in_current(c40), 0.954, 6e-4, "C2");
+  EXPECT_CHECK_RELATIVE("K_m small-signal at 40 degC [N m/rad]", slope_in_angle(c40), 11.23, 5e-4, "C1");
+  EXPECT_CHECK_RELATIVE("K_m small-signal at 120 degC [N m/rad]", slope_in_angle(c120), 10.75, 5e-4, "C1");
   // 2.2 "derived at 40 degC": M = 1320 A, R_m = 2.93e7, R_g = 1.49e7 A/Wb, B_g = 0.550 T
-  EXPECT_LT(relative(c40.magnet_mmf(), 1320), 5e-4);
-  EXPECT_LT(relative(c40.magnet_reluctance(), 2.93e7), 2e-3);
-  EXPECT_LT(relative(c40.gap_reluctance_at_null(), 1.49e7), 2e-3);
+  EXPECT_CHECK_RELATIVE("magnet mmf M at 40 degC [A]", c40.magnet_mmf(), 1320, 5e-4, "model.md 2.2");
+  EXPECT_CHECK_RELATIVE("magnet reluctance R_m [A/Wb]", c40.magnet_reluctance(), 2.93e7, 2e-3, "model.md 2.2");
+  EXPECT_CHECK_RELATIVE("gap reluctance R_g at null [A/Wb]", c40.gap_reluctance_at_null(), 1.49e7, 2e-3,
+                        "model.md 2.2");
   const auto s = c40.solve(0, 0);
-  EXPECT_LT(relative(s.gap_flux[0] / c40.gap_area(), 0.550), 1e-3);
+  EXPECT_CHECK_RELATIVE("gap flux density B_g at 40 degC [T]", s.gap_flux[0] / c40.gap_area(), 0.550, 1e-3,
+                        "model.md 2.2");
   // the temperature trend: C2's ratio agrees with 2.2's 0.018970/0.019817 to 5e-5; the paper's FEM
   // (section 3 item 1) falls by 4.34 %, RV-1 by 4.28 %
-  EXPECT_NEAR(c120.torque(tenth, 0) / c40.torque(tenth, 0), 0.018970 / 0.019817, 5e-5);
-  EXPECT_NEAR(c120.torque(tenth, 0) / c40.torque(tenth, 0) - 1, -0.0434, 0.001);
+  const double ratio = c120.torque(tenth, 0) / c40.torque(tenth, 0);
+  EXPECT_CHECK_ABSOLUTE("T(0.1 deg) 120 degC / 40 degC", ratio, 0.018970 / 0.019817, 5e-5, "model.md 2.2");
+  EXPECT_CHECK_ABSOLUTE("T(0.1 deg) change 40 -> 120 degC", ratio - 1, -0.0434, 0.001, "the paper's FEM");
 }
 
 TEST(TorqueMotorCircuit, SymmetricClosedFormE4)
@@ -76,12 +79,13 @@ TEST(TorqueMotorCircuit, SymmetricClosedFormE4)
   const double Rg = c.gap_reluctance_at_null(), a = c.pivot_to_pole_distance(), g = c.mean_gap();
   const double phi_g = M_eq / (2 * (Rg + R_eq));
   const double N = v.torque_motor.turns_per_coil;
-  EXPECT_LT(relative(c.solve(0, 0).gap_flux[0], phi_g), 1e-12);
-  EXPECT_LT(relative(slope_in_current(c), 2 * (a / g) * N * phi_g), 1e-8);
-  EXPECT_LT(relative(slope_in_angle(c), 4 * (a / g) * (a / g) * Rg * phi_g * phi_g), 1e-8);
+  EXPECT_CHECK_RELATIVE("gap flux at null [Wb]", c.solve(0, 0).gap_flux[0], phi_g, 1e-12, "E4");
+  EXPECT_CHECK_RELATIVE("K_t [N m/A]", slope_in_current(c), 2 * (a / g) * N * phi_g, 1e-8, "E4");
+  EXPECT_CHECK_RELATIVE("K_m [N m/rad]", slope_in_angle(c), 4 * (a / g) * (a / g) * Rg * phi_g * phi_g, 1e-8, "E4");
   // K_t/K_m = mu0 N_c/(2 a B_g)
   const double B_g = phi_g / c.gap_area();
-  EXPECT_LT(relative(slope_in_current(c) / slope_in_angle(c), units::mu0 * N / (2 * a * B_g)), 1e-8);
+  EXPECT_CHECK_RELATIVE("K_t/K_m [rad/A]", slope_in_current(c) / slope_in_angle(c), units::mu0 * N / (2 * a * B_g),
+                        1e-8, "E4: mu0 N_c/(2 a B_g)");
 }
 
 TEST(TorqueMotorCircuit, IdealCircuitMatchesMerrittE5)
@@ -102,7 +106,9 @@ TEST(TorqueMotorCircuit, IdealCircuitMatchesMerrittE5)
         const double x = a * theta;
         const double e5 = ((1 + x * x / (g * g)) * K_t * i + (1 + std::pow(N * i / M0, 2)) * K_m * theta) /
                           std::pow(1 - x * x / (g * g), 2);
-        EXPECT_LT(relative(c.torque(theta, i), e5), 2e-5) << theta << " rad, " << i << " A";
+        EXPECT_CHECK_RELATIVE("torque at " + format_number(theta / units::degree) + " deg, " +
+                                format_number(i * 1e3) + " mA [N m]",
+                              c.torque(theta, i), e5, 2e-5, "E5, exact for R_eq = 0 (here R_eq/R_g = 3e-6)");
       }
 }
 
@@ -112,10 +118,13 @@ TEST(TorqueMotorCircuit, TorqueIsOddAndCurrentSignIsRight)
   for (double T : {40.0, 120.0}) // at 120 degC the upper and lower gaps differ (E6, E7)
     {
       const TorqueMotorCircuit c(v, T);
+      double oddness = 0;
       for (double theta : {0.01, 0.1, 0.3})
-        EXPECT_LT(std::abs(c.torque(theta * units::degree, 0) + c.torque(-theta * units::degree, 0)),
-                  1e-13 * std::abs(c.torque(theta * units::degree, 0)));
-      EXPECT_LT(std::abs(c.torque(0, 0.02) + c.torque(0, -0.02)), 1e-13 * c.torque(0, 0.02));
+        oddness = std::max(oddness, std::abs(c.torque(theta * units::degree, 0) + c.torque(-theta * units::degree, 0)) /
+                                      std::abs(c.torque(theta * units::degree, 0)));
+      oddness = std::max(oddness, std::abs(c.torque(0, 0.02) + c.torque(0, -0.02)) / c.torque(0, 0.02));
+      EXPECT_CHECK_AT_MOST("|T(x) + T(-x)| / |T(x)| at " + format_number(T) + " degC, x = theta or i", oddness, 1e-13,
+                           "odd in theta and i");
       EXPECT_GT(c.torque(0, 0.02), 0); // positive current raises the flux in gaps 1 and 4
       EXPECT_GT(c.solve(0, 0.02).gap_flux[0], c.solve(0, 0).gap_flux[0]);
       EXPECT_GT(c.solve(0, 0.02).gap_flux[3], c.solve(0, 0).gap_flux[3]);
@@ -127,8 +136,9 @@ TEST(TorqueMotorCircuit, SeriesAidingCoilsDoubleKt)
 {
   const auto push_pull = test::valve();
   const auto series = test::valve({"Torque motor/Coil connection=series-aiding"});
-  EXPECT_LT(relative(slope_in_current(TorqueMotorCircuit(series, 40)), 2 * slope_in_current(TorqueMotorCircuit(push_pull, 40))),
-            1e-9);
+  EXPECT_CHECK_RELATIVE("K_t series-aiding / push-pull",
+                        slope_in_current(TorqueMotorCircuit(series, 40)) / slope_in_current(TorqueMotorCircuit(push_pull, 40)),
+                        2, 1e-9, "two coils in series");
 }
 
 TEST(TorqueMotorCircuit, FluxConservation)
@@ -136,6 +146,10 @@ TEST(TorqueMotorCircuit, FluxConservation)
   // Kirchhoff at the nodes: magnet flux = leakage + flux into the upper pole (gaps 3 + 4)
   const auto v = test::valve();
   const auto s = TorqueMotorCircuit(v, 80).solve(0.07 * units::degree, 0.013);
-  EXPECT_LT(std::abs(s.magnet_flux - s.leakage_flux - s.gap_flux[2] - s.gap_flux[3]), 1e-15 * s.magnet_flux);
-  EXPECT_LT(std::abs(s.gap_flux[2] + s.gap_flux[3] - s.gap_flux[0] - s.gap_flux[1]), 1e-15 * s.magnet_flux);
+  EXPECT_CHECK_AT_MOST("magnet node: |magnet - leakage - gaps 3, 4| / magnet flux",
+                       std::abs(s.magnet_flux - s.leakage_flux - s.gap_flux[2] - s.gap_flux[3]) / s.magnet_flux, 1e-15,
+                       "Kirchhoff");
+  EXPECT_CHECK_AT_MOST("armature: |gaps 3, 4 - gaps 1, 2| / magnet flux",
+                       std::abs(s.gap_flux[2] + s.gap_flux[3] - s.gap_flux[0] - s.gap_flux[1]) / s.magnet_flux, 1e-15,
+                       "Kirchhoff");
 }

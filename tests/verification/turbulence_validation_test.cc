@@ -8,8 +8,8 @@
 //     Re = 23 000, the wall jet's velocity profiles (the flapper's flow);
 //   - the sharp-edged orifice: Lichtarowicz, Duggins and Markland's correlation (E21) below
 //     cavitation, Nurick's C_d = C_c sqrt(K) when it cavitates;
-// each model's error printed as a row of doc/validation.md's table and checked against the bound
-// the evidence allows (stated per check below).
+// each model's result recorded as a row of doc/validation.md's table (tests/support/checks.h) and
+// checked against the bound the evidence allows (stated per check below).
 #include "common/error.h"
 #include "common/gmsh_mesh.h"
 #include "common/output_files.h"
@@ -17,6 +17,7 @@
 #include "common/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
 #include "flow/simplec.h"
+#include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -125,7 +126,7 @@ namespace servodrift::flow
   class BackwardFacingStep : public ::testing::TestWithParam<Turbulence>
   {};
 
-  TEST_P(BackwardFacingStep, ReattachmentLength)
+  SLOW_TEST_P(BackwardFacingStep, ReattachmentLength)
   {
     const double H = 1, U = 1, rho = 1, Re = 36000, delta = 1.5 * H;
     static const GmshTemplate geo{"backward_facing_step.geo",
@@ -182,7 +183,8 @@ namespace servodrift::flow
     // reattaches 10.9 % short, beyond that (doc/validation.md's table says so); it is held within
     // 15 %, so that a worse answer shows
     const bool credible = GetParam() != Turbulence::k_epsilon_launder_sharma;
-    EXPECT_NEAR(reattachment / (6.26 * H), 1, credible ? 0.10 : 0.15);
+    EXPECT_CHECK_RELATIVE(std::string("backward-facing step: reattachment length x_r/H, ") + model_name(GetParam()),
+                          reattachment / H, 6.26, credible ? 0.10 : 0.15, "Driver and Seegmiller 1985, +-0.10");
   }
 
   INSTANTIATE_TEST_SUITE_P(TurbulenceValidation, BackwardFacingStep,
@@ -257,7 +259,7 @@ namespace servodrift::flow
   class ImpingingJet : public ::testing::TestWithParam<Turbulence>
   {};
 
-  TEST_P(ImpingingJet, WallJetProfiles)
+  SLOW_TEST_P(ImpingingJet, WallJetProfiles)
   {
     const double D = 1, U = 1, rho = 1, Re = 23000, h = 2 * D;
     const PipeProfiles inflow = developed_pipe(GetParam(), Re);
@@ -308,6 +310,12 @@ namespace servodrift::flow
         std::printf("  r/D %.1f: RMS difference %.3f U_b over %zu points; peak %.3f (measured %.3f, %+.1f %%)\n", r,
                     std::sqrt(station_sum / points.size()), points.size(), computed_peak, measured_peak,
                     100 * (computed_peak / measured_peak - 1));
+        // the peaks doc/validation.md shows beside the bounded RMS difference: compared, not bounded
+        if (r == 1 || r == 2 || r == 3)
+          test::record_check("impinging jet: wall-jet peak V/U_b at r/D " + format_number(r) + ", " +
+                               model_name(GetParam()),
+                             test::shown(measured_peak) + " (Cooper et al. 1993)", "- (shown)",
+                             test::shown(computed_peak));
       }
     // the repeated traverses: pairs of points at the same r/D and y/D from traverses at other Re
     std::map<std::pair<double, double>, std::vector<double>> repeats;
@@ -322,7 +330,10 @@ namespace servodrift::flow
                 rms, scatter, pairs);
     EXPECT_GT(count, 100);
     EXPECT_GE(pairs, 20);
-    EXPECT_LT(rms, 2.5 * scatter);
+    EXPECT_CHECK_AT_MOST("impinging jet: wall-jet V/U_b, RMS difference over r/D 0.5-3 (" + format_number(count) +
+                           " points), " + model_name(GetParam()),
+                         rms, 2.5 * scatter,
+                         "Cooper et al. 1993: 2.5 x its repeated traverses' RMS difference " + test::shown(scatter));
   }
 
   INSTANTIATE_TEST_SUITE_P(TurbulenceValidation, ImpingingJet,
@@ -344,7 +355,7 @@ namespace servodrift::flow
   class CavitatingOrifice : public ::testing::TestWithParam<Turbulence>
   {};
 
-  TEST_P(SharpEdgedOrifice, Lichtarowicz)
+  SLOW_TEST_P(SharpEdgedOrifice, Lichtarowicz)
   {
     ValveDescription v = test::valve();
     v.flow_solver.tolerance = 1e-6;
@@ -368,12 +379,14 @@ namespace servodrift::flow
                     "%u iterations\n",
                     model_name(GetParam()), r.reynolds_number, r.discharge_coefficient, e21,
                     100 * (r.discharge_coefficient / e21 - 1), r.max_wall_y_plus, r.iterations);
-        EXPECT_NEAR(r.discharge_coefficient / e21, 1, 0.05);
+        EXPECT_CHECK_RELATIVE("sharp-edged orifice, single phase: C_d at Re_0 " + format_number(Re) + ", " +
+                                model_name(GetParam()),
+                              r.discharge_coefficient, e21, 0.05, "Lichtarowicz E21");
         previous = std::move(orifice);
       }
   }
 
-  TEST_P(CavitatingOrifice, Nurick)
+  SLOW_TEST_P(CavitatingOrifice, Nurick)
   {
     ValveDescription v = test::valve();
     v.flow_solver.tolerance = 1e-6;
@@ -391,7 +404,9 @@ namespace servodrift::flow
                     model_name(GetParam()), level * 1e-6, K, r.discharge_coefficient, nurick,
                     100 * (r.discharge_coefficient / nurick - 1), r.iterations);
         EXPECT_TRUE(r.cavitating);
-        EXPECT_NEAR(r.discharge_coefficient / nurick, 1, 0.05);
+        EXPECT_CHECK_RELATIVE("sharp-edged orifice, cavitating, 40 degC: C_d at dp " + format_number(level * 1e-6) +
+                                " MPa, " + model_name(GetParam()),
+                              r.discharge_coefficient, nurick, 0.05, "Nurick, C_c 0.61");
         // as the cavity grows towards the outlet, SST's step from 15.45 to 20.6 MPa in one diverges
         // at its 12th iteration; through levels 1.1 apart it converges (a robustness limit, issue 28)
         cavitating.set_continuation_ratio(1.1);
