@@ -112,7 +112,8 @@ namespace servodrift::flow
     /// stiff that its hot nozzle cases stalled and their marched steps hit the iteration cap. With
     /// e~/k from the linearised k but the production from the relaxed mu_t, 4 hot nozzle cases of
     /// its sweep were flagged 2; with the model's mu_t of the linearised state, 1 is (and without
-    /// the hole rule, hole_fraction, its developed pipe stalled; doc/changes.md, seventeenth look).
+    /// the hole rule, hole_fraction, its developed pipe stalled; doc/changes.md, issue 28:
+    /// Launder-Sharma's e~ production and holes).
     /// The two-layer model keeps the k just solved and the relaxed mu_t: with the linearised k 14 of
     /// its default sweep's 10 and 20 um cases converged to other states (up to 4.8 % in C_d) and a
     /// coarse-mesh case stalled.

@@ -19,11 +19,12 @@ namespace servodrift::flow
   /// among stalls of one rank, the smallest largest scaled residual. Why: a far stall can march into
   /// another motion whose steps stop at their iteration cap while a near one of the same case
   /// averages calmly (Launder-Sharma's orifice at 15.45 MPa and 100 degC: continuity 0.20 against
-  /// 5e-3; doc/changes.md, twenty-second look); at 90 degC, marched from its stall on the way at
+  /// 5e-3; doc/changes.md, issue 28: which stall a refused march starts from); at 90 degC, marched from its stall on the way at
   /// 6.26 MPa, it diverged at its first step, from k-epsilon's solution it settles
   /// (bench_orifice_march 90). k-epsilon's solution does not outrank a stall at the case's level:
   /// SST's nozzle at 40 um, 3.09 MPa and 120 degC, marched from it, still drifts after 9 000 steps
-  /// (flagged 2), from its own stall (continuity 0.037) it averages (doc/changes.md, twenty-sixth look).
+  /// (flagged 2), from its own stall (continuity 0.037) it averages (doc/changes.md, issue 28: k-epsilon's
+  /// solution as a state to march).
   class FailedAttempts
   {
   public:

@@ -144,7 +144,7 @@ namespace servodrift::flow
     d.forget_time_levels();
     // solve() goes back to SIMPLEC after stalled coupled iterations; solve_to() for a start state
     // (an intermediate pressure level, the liquid check) fails there as before: the flow stage was
-    // measured unchanged with them so (doc/changes.md, eighteenth look), not measured otherwise
+    // measured unchanged with them so (doc/changes.md, issue 28: what stops Launder-Sharma's last flagged cases), not measured otherwise
     IterationControl control(d.settings, tolerance, consult_monitor ? &d.monitor : nullptr, d.turbulence->turbulent(),
                              consult_monitor);
     Residuals r;

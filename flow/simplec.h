@@ -124,12 +124,13 @@ namespace servodrift::flow
     /// flow rate); 0: never held (exactly SIMPLEC's discrete equations).
     PtcReport solve_newton(const PtcSettings &settings, double limiter_hold_residual = 1e-5);
 
-    /// Time stepping, laminar (time_stepping.cc): one step of dt [s] from the current fields, second-
-    /// order backward differences (BDF2) after a first implicit Euler step at the same dt (any other
-    /// change of the fields in between starts again with implicit Euler); SIMPLEC iterations until the scaled residuals fall below `tolerance' or
-    /// `max_iterations' (a step may end before its tolerance: the report's residuals say where).
-    /// Throws std::invalid_argument with a turbulence model or dt <= 0, std::runtime_error at a
-    /// divergence.
+    /// Time stepping (time_stepping.cc), laminar or with any turbulence model, single phase or
+    /// cavitating: one step of dt [s] from the current fields, second-order backward differences
+    /// (BDF2) after a first implicit Euler step at the same dt (any other change of the fields in
+    /// between starts again with implicit Euler); SIMPLEC iterations until the scaled residuals fall
+    /// below `tolerance' or `max_iterations' (a step may end before its tolerance: the report's
+    /// residuals say where). Throws std::invalid_argument for dt <= 0 or no iterations,
+    /// std::runtime_error at a divergence.
     SolveReport advance(double dt, unsigned int max_iterations, double tolerance);
     /// The time step at which the largest cell Courant number of the current fluxes, half the sum
     /// of |F| over a cell's faces over its mass, dt sum|F|/(2 rho_m V), is `courant' [s].
