@@ -3,6 +3,7 @@
 // wall times (minimum and median of several repetitions).
 //   build/bench/bench_drift_map [repetitions]
 #include "bench/benchmarks.h"
+#include "bench/figures.h"
 #include "bench/time_it.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
@@ -47,6 +48,11 @@ int servodrift::bench::bench_drift_map(int argc, char **argv)
               << "system stage without I/O (coefficients, drift map, E28): min " << whole.first << " s, median "
               << whole.second << " s\n"
               << "(" << repetitions << " repetitions, " << mpi_size() << " MPI rank(s))\n";
+  const Figures figures(argc, argv);
+  figures.record("one drift map, " + std::to_string(valve.sweeps.drift_temperatures.size()) + " temperatures x " +
+                   std::to_string(valve.sweeps.deviation_angles.size()) + " angles, reduced-order tables",
+                 "under 1 s", seconds(map.first));
+  figures.record("the system stage without I/O (coefficients, drift map, E28)", "no target", seconds(whole.first));
   std::filesystem::remove_all(dir);
   return 0;
 }

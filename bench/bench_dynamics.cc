@@ -8,6 +8,7 @@
 // Not a test: it prints wall times (minimum and median of the repetitions).
 //   build/bench/bench_dynamics [repetitions]          (or under mpirun -np 2)
 #include "bench/benchmarks.h"
+#include "bench/figures.h"
 #include "bench/time_it.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
@@ -88,6 +89,17 @@ int servodrift::bench::bench_dynamics(int argc, char **argv)
               << "whole dynamics stage (" << temperatures.size() << " temperatures): min " << whole.first
               << " s, median " << whole.second << " s\n"
               << "(" << repetitions << " repetitions, " << mpi_size() << " MPI rank(s))\n";
+  const Figures figures(argc, argv);
+  figures.record("linearised frequency response, " + std::to_string(temperatures.size()) +
+                   " temperatures x 200 frequencies",
+                 "under 1 s", seconds(linear.first));
+  figures.record("one nonlinear step response 0 -> rated at 40 degC, to settling", "under 0.5 s on one core",
+                 seconds(step.first));
+  figures.record("sine check, " + std::to_string(p.sine_frequencies.size()) + " frequencies x " +
+                   std::to_string(temperatures.size()) + " temperatures, halved to the linear limit",
+                 "under 30 s on 2 cores", seconds(sines.first));
+  figures.record("whole dynamics stage, " + std::to_string(temperatures.size()) + " temperatures", "no target",
+                 seconds(whole.first));
   if (mpi_rank() == 0)
     std::filesystem::remove_all(dir);
   return 0;

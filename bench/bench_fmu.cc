@@ -5,6 +5,7 @@
 //   Co-Simulation, 1 s of valve time after a step to the rated current in 1 ms communication steps:
 //     target at most 0.5 s of one core.
 // Usage: unzip -q -o <out>/servodrift_valve.fmu -d <dir> && build/bench/bench_fmu <dir>
+#include "bench/figures.h"
 #include "bench/time_it.h"
 #include "fmu/fmi2.h"
 
@@ -141,6 +142,12 @@ int main(int argc, char **argv)
   std::printf("Co-Simulation, 1 s of valve time in 1 ms steps after a step to the rated current: min %.3f s, "
               "median %.3f s (target <= 0.5 s)\n",
               cs_min, cs_median);
+  const servodrift::bench::Figures figures(argc, argv);
+  figures.record("FMU instantiation (reading resources/)", "at most 50 ms", servodrift::bench::seconds(instantiate_median));
+  figures.record("FMU, one derivative evaluation (Model Exchange), the temperature moving", "at most 20 us",
+                 servodrift::bench::seconds(moving_median / calls));
+  figures.record("FMU Co-Simulation, 1 s of valve time in 1 ms steps", "at most 0.5 s of one core",
+                 servodrift::bench::seconds(cs_median));
   dlclose(library);
   return 0;
 }

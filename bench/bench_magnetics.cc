@@ -5,6 +5,7 @@
 // The default sweep (9 x 9 x 5 cases) is timed with the command itself:
 //   time mpirun -np 2 build/servodrift magnetics -o /tmp/bench
 #include "bench/benchmarks.h"
+#include "bench/figures.h"
 #include "common/units.h"
 #include "common/valve_description.h"
 #include "magnetics/torque_motor_field.h"
@@ -56,5 +57,10 @@ int servodrift::bench::bench_magnetics(int argc, char **argv)
   std::printf("  next case (0.15 deg, 10 mA), warm start:     %.3f s, %u Newton/chord iterations at the case\n",
               median(warm), warm_iterations);
   std::printf("  (each case: the solve, the stress tensor, and two more solves for the virtual work)\n");
+  const Figures figures(argc, argv);
+  figures.record("torque motor, one (T, theta, i) case from A = 0 (" + std::to_string(dofs) + " unknowns)",
+                 "under 1 s", servodrift::bench::seconds(median(cold)));
+  figures.record("the next case, warm (as inside a sweep)", "no target", servodrift::bench::seconds(median(warm)));
+  figures.record("meshing and set-up, once per temperature", "no target", servodrift::bench::seconds(median(setup)));
   return 0;
 }

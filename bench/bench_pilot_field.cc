@@ -10,6 +10,7 @@
 // (extra arguments are `--set' entries, e.g. 'Flow solver/Report interval=100' for the residual
 // history, 'Flow solver/Turbulence model=k-epsilon' for one model only)
 #include "bench/benchmarks.h"
+#include "bench/figures.h"
 #include "common/valve_description.h"
 #include "flow/pilot_field.h"
 
@@ -54,6 +55,7 @@ int servodrift::bench::bench_pilot_field(int argc, char **argv)
       }
     return "?";
   };
+  const Figures figures(argc, argv);
   for (const auto model : models)
     for (const double resolution : resolutions)
       {
@@ -69,6 +71,9 @@ int servodrift::bench::bench_pilot_field(int argc, char **argv)
             std::printf("%-10s %10.2f %8zu %11u %8u %10.2f %8.4f %9.4f\n", name(model), resolution,
                         nozzle.n_cells(), r.iterations, r.coarse_mesh_iterations, s, r.discharge_coefficient,
                         r.flapper_force);
+            figures.record(std::string("RV-1's nozzle at its null from rest, ") + name(model) + ", " +
+                             std::to_string(nozzle.n_cells()) + " cells",
+                           "no target", seconds(s) + ", " + std::to_string(r.iterations) + " iterations");
           }
         catch (const std::exception &e)
           {

@@ -5,6 +5,7 @@
 // The default sweep (9 temperatures, with the VTU files) is timed with the command itself:
 //   time build/servodrift structure -o /tmp/bench
 #include "bench/benchmarks.h"
+#include "bench/figures.h"
 #include "common/valve_description.h"
 #include "structure/spring_tube_field.h"
 #include "structure/spring_tube_stage.h"
@@ -26,6 +27,7 @@ int servodrift::bench::bench_structure(int argc, char **argv)
   using clock = std::chrono::steady_clock;
   auto seconds = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
 
+  const Figures figures(argc, argv);
   std::printf("| resolution | cells | unknowns | K_a [N*m/rad] | solve [s] | stress [s] | VTU [s] |\n|---|---|---|---|---|---|---|\n");
   for (const char *resolution : {"1", "2", "4"})
     {
@@ -52,6 +54,9 @@ int servodrift::bench::bench_structure(int argc, char **argv)
           dofs = field->n_dofs();
         }
       std::printf("| %s | %u | %u | %.5f | %.3f | %.3f | %.3f |\n", resolution, cells, dofs, K, solve, stress, vtu);
+      figures.record("spring tube, one temperature at resolution " + std::string(resolution) + " (" +
+                       std::to_string(dofs) + " unknowns): mesh, assembly, factorisation, two solves",
+                     std::string(resolution) == "1" ? "under 10 s" : "no target", servodrift::bench::seconds(solve));
     }
   std::remove("/tmp/bench_structure.vtu");
   return 0;
