@@ -1,5 +1,7 @@
 #include "bench/figures.h"
 
+#include "common/csv.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -14,14 +16,6 @@ namespace servodrift::bench
     {
       const char *rank = std::getenv("OMPI_COMM_WORLD_RANK");
       return !rank || std::atoi(rank) == 0;
-    }
-
-    std::string csv_field(const std::string &text)
-    {
-      std::string quoted = "\"";
-      for (char c : text)
-        quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-      return quoted + "\"";
     }
   } // namespace
 
@@ -51,8 +45,8 @@ namespace servodrift::bench
     if (!directory || !*directory)
       return;
     std::ofstream out(std::filesystem::path(directory) / (driver + ".csv"), std::ios::app);
-    out << csv_field(driver) << ',' << csv_field(figure) << ',' << csv_field(target) << ',' << csv_field(measured)
-        << ',' << csv_field(command) << '\n';
+    out << quoted_csv_field(driver) << ',' << quoted_csv_field(figure) << ',' << quoted_csv_field(target) << ',' << quoted_csv_field(measured)
+        << ',' << quoted_csv_field(command) << '\n';
   }
 
   std::string seconds(double s)

@@ -14,4 +14,14 @@ namespace servodrift
     /// The comments, a "# columns ..." line, the column header row and the rows.
     std::string text() const;
   };
+
+  /// One field of a CSV record in double quotes, its quotes doubled (RFC 4180): for free text, as the
+  /// records of the tests' checks and the benchmarks' figures hold it.
+  inline std::string quoted_csv_field(const std::string &text)
+  {
+    std::string quoted = "\"";
+    for (char c : text)
+      quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+  }
 } // namespace servodrift

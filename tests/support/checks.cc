@@ -1,5 +1,7 @@
 #include "tests/support/checks.h"
 
+#include "common/csv.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,14 +15,6 @@ namespace servodrift::test
 {
   namespace
   {
-    std::string csv_field(const std::string &text)
-    {
-      std::string quoted = "\"";
-      for (char c : text)
-        quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-      return quoted + "\"";
-    }
-
     std::string printed(double value, const char *format)
     {
       char buffer[48];
@@ -59,8 +53,8 @@ namespace servodrift::test
     std::filesystem::create_directories(directory);
     const auto path = std::filesystem::path(directory) / (file + ".csv");
     std::ofstream out(path, started.insert(test).second ? std::ios::trunc : std::ios::app);
-    out << csv_field(test) << ',' << csv_field(check) << ',' << csv_field(reference) << ',' << csv_field(tolerance)
-        << ',' << csv_field(value) << '\n';
+    out << quoted_csv_field(test) << ',' << quoted_csv_field(check) << ',' << quoted_csv_field(reference) << ','
+        << quoted_csv_field(tolerance) << ',' << quoted_csv_field(value) << '\n';
   }
 
   void check_relative(const char *file, int line, const std::string &check, double measured, double reference,
