@@ -15,12 +15,14 @@ namespace servodrift
         prm.declare_entry(side + " orifice diameter deviation", "0", Patterns::Double(-1e-4, 1e-4),
                           "Diameter of the " + std::string(left ? "left" : "right") +
                             " fixed orifice (feeding " + p + ") minus the nominal `Pilot stage/Fixed orifice diameter' "
-                            "(E31). With tables of the nominal geometry the area scales exactly and C_d is "
-                            "read at the same Reynolds number (doc/method.md). [m]");
+                            "(E31). The tables hold the nominal bore: the side's flow is the table's times the "
+                            "ratio of the bore tables (`Pilot stage/Bore sensitivity') or of E21 "
+                            "(doc/method.md, \"A bore off the tables' geometry\"). [m]");
         prm.declare_entry(side + " nozzle diameter deviation", "0", Patterns::Double(-1e-4, 1e-4),
                           "Diameter of the " + std::string(left ? "left" : "right") +
-                            " nozzle minus the nominal `Pilot stage/Nozzle diameter' (E32, E23): the curtain "
-                            "area scales with it, the flapper force with its square. [m]");
+                            " nozzle minus the nominal `Pilot stage/Nozzle diameter' (E32, E23): the side's flow "
+                            "and jet force are the table's times the ratios of the bore tables or of E22 and "
+                            "E23 (doc/method.md, \"A bore off the tables' geometry\"). [m]");
         prm.declare_entry(side + " null gap deviation", "0", Patterns::Double(-5e-5, 5e-5),
                           "This side's nozzle-flapper gap at x_f = 0 minus the nominal x0(T) (flapper "
                           "centring, nozzle position). [m]");
