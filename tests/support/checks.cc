@@ -4,11 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 
 namespace servodrift::test
@@ -34,6 +36,16 @@ namespace servodrift::test
   } // namespace
 
   std::string shown(double value) { return std::isfinite(value) ? printed(value, "%.4g") : "not finite"; }
+
+  double larger(double a, double b)
+  {
+    return std::isnan(a) || std::isnan(b) ? std::numeric_limits<double>::quiet_NaN() : std::max(a, b);
+  }
+
+  double smaller(double a, double b)
+  {
+    return std::isnan(a) || std::isnan(b) ? std::numeric_limits<double>::quiet_NaN() : std::min(a, b);
+  }
 
   void record_check(const std::string &check, const std::string &reference, const std::string &tolerance,
                     const std::string &value)

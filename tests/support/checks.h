@@ -39,4 +39,8 @@ namespace servodrift::test
   /// A measured value as the doc shows it: 4 significant digits, the precision the references carry
   /// and one that does not change with a machine's rounding.
   std::string shown(double value);
+  /// The larger (smaller) of two values, NaN winning: the worst case of a loop, checked once, keeps a
+  /// failed point (NaN) failed.
+  double larger(double a, double b);
+  double smaller(double a, double b);
 } // namespace servodrift::test

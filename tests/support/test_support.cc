@@ -4,6 +4,11 @@
 #include "flow/pilot_stage.h"
 #include "magnetics/torque_motor_stage.h"
 #include "structure/spring_tube_stage.h"
+#include "system/dynamics.h"
+#include "tests/support/reduced_order_valve.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace servodrift::test
 {
@@ -28,5 +33,29 @@ namespace servodrift::test
     structure::run(v);
     flow::run(v);
     return tables_directory(v);
+  }
+
+  ReducedOrderValve::ReducedOrderValve(const std::vector<std::string> &overrides)
+    : description(valve(overrides))
+    , tables(write_reduced_order_tables(description))
+    , model(description, system::StageTables::read(tables, description))
+  {}
+
+  system::ValveDynamics ReducedOrderValve::dynamics(double T, system::HeldParts held,
+                                                    const system::Offsets &offsets) const
+  {
+    return system::ValveDynamics(model.equations(T, offsets), system::amplifier_resistance(description),
+                                 description.operating.rated_current, held);
+  }
+
+  double scaled_rates(const system::ValveDynamics &d, const system::ValveState &s, double command)
+  {
+    std::vector<double> y = d.vector_of(s), f(y.size());
+    d.rates(y.data(), command, f.data());
+    const double w_ref = std::sqrt(d.equations().spring_stiffness() / d.equations().inertia());
+    double worst = 0;
+    for (std::size_t k = 0; k < y.size(); ++k)
+      worst = std::max(worst, std::abs(f[k]) / (d.scales()[k] * w_ref));
+    return worst;
   }
 } // namespace servodrift::test

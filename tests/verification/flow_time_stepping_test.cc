@@ -29,6 +29,8 @@
 namespace servodrift::flow
 {
   using namespace domains;
+  using test::larger;
+  using test::smaller;
 
   namespace
   {
@@ -71,11 +73,6 @@ namespace servodrift::flow
         }
       return Q;
     }
-
-    /// The larger and the smaller of two values, NaN if either is: a check of the worst case fails
-    /// where a check of each would.
-    double larger(double a, double b) { return std::isnan(a) || b < a ? a : b; }
-    double smaller(double a, double b) { return std::isnan(a) || a < b ? a : b; }
 
     /// A turbulence model as a check names it.
     const char *label(FlowSolverParameters::Turbulence t)

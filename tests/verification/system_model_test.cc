@@ -6,6 +6,7 @@
 #include "system/system_stage.h"
 #include "system/valve_model.h"
 #include "tests/support/checks.h"
+#include "tests/support/reduced_order_valve.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -17,21 +18,13 @@
 
 using namespace servodrift;
 using namespace servodrift::system;
+using test::larger;
 using test::relative;
+using test::smaller;
 
 namespace
 {
-  struct Valve
-  {
-    ValveDescription description;
-    std::string tables;
-    ValveModel model;
-    explicit Valve(const std::vector<std::string> &overrides)
-      : description(test::valve(overrides))
-      , tables(test::write_reduced_order_tables(description))
-      , model(description, StageTables::read(tables, description))
-    {}
-  };
+  using Valve = test::ReducedOrderValve;
 
   /// RV-1 with a torque table that reaches the nozzle contacts (0.23 deg) and beyond, so that
   /// saturated operating points stay inside the tables
@@ -39,16 +32,6 @@ namespace
   {
     static const Valve v({"Sweeps/Motor angles=-0.4, -0.3, -0.2, -0.15, -0.1, -0.05, 0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4"});
     return v;
-  }
-
-  /// The larger (smaller) of two values, NaN winning: the worst case of a loop keeps a failed point failed.
-  double larger(double a, double b)
-  {
-    return std::isnan(a) || std::isnan(b) ? std::numeric_limits<double>::quiet_NaN() : std::max(a, b);
-  }
-  double smaller(double a, double b)
-  {
-    return std::isnan(a) || std::isnan(b) ? std::numeric_limits<double>::quiet_NaN() : std::min(a, b);
   }
 } // namespace
 
