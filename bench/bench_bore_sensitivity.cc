@@ -72,7 +72,7 @@ int servodrift::bench::bench_bore_sensitivity(int argc, char **argv)
   const double delta = argc > 2 ? std::atof(argv[2]) : 2e-6;
   const std::string out = argc > 3 ? argv[3] : (std::filesystem::temp_directory_path() / "servodrift-bench-bores").string();
 
-  const ValveDescription nominal = valve(level, out + "/nominal", {"Pilot stage/Bore sensitivity=on"});
+  const ValveDescription nominal = valve(level, out + "/nominal", {"Pilot stage/Bore sensitivity/Tables=on"});
   const double d0 = nominal.pilot.fixed_orifice_diameter, dN = nominal.pilot.nozzle_diameter;
   // the left side's tables at each bore: orifice +delta, -delta, nozzle +delta, -delta
   std::vector<ValveDescription> sides;
@@ -85,7 +85,7 @@ int servodrift::bench::bench_bore_sensitivity(int argc, char **argv)
       // tables a previous run left in the same directory for the same description are reused
       const std::string tables = tables_directory(*v);
       bool reuse = std::filesystem::exists(tables + "/nozzle_flapper.csv") &&
-                   (v->pilot.bore_sensitivity != PilotStageParameters::BoreSensitivity::on ||
+                   (v->pilot.bore_sensitivity.tables != BoreSensitivityParameters::Tables::on ||
                     std::filesystem::exists(tables + "/nozzle_flapper_bore.csv"));
       if (reuse)
         {
@@ -107,7 +107,7 @@ int servodrift::bench::bench_bore_sensitivity(int argc, char **argv)
   const double rated = 0.02, per_um = 1e-6 / rated * 100;
 
   std::ostringstream csv;
-  csv << "# null shift per micrometre of the left bore: by the bore tables (step `Pilot stage/Bore sensitivity "
+  csv << "# null shift per micrometre of the left bore: by the bore tables (step `Pilot stage/Bore sensitivity/Tables "
          "step') and by the closed forms' ratio on the nominal tables, against the left side's tables recomputed at "
          "that bore (pilot stage: "
       << level << "; forward differences over +-" << delta << " m, and their central difference)\n"

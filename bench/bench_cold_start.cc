@@ -50,9 +50,9 @@ namespace
     double path_from = 0;
   };
 
-  PilotStageParameters::FlowModel flow_model(Turbulence t)
+  PilotFieldSolutionParameters::FlowModel flow_model(Turbulence t)
   {
-    using M = PilotStageParameters::FlowModel;
+    using M = PilotFieldSolutionParameters::FlowModel;
     switch (t)
       {
         case Turbulence::laminar: return M::laminar;
@@ -144,9 +144,9 @@ int servodrift::bench::bench_cold_start(int argc, char **argv)
       std::vector<std::string> these = settings;
       these.insert(these.begin() + 1, "Flow solver/Realizability coefficient=" + std::to_string(s.realizability));
       ValveDescription valve = load_valve_description("", these);
-      valve.pilot.field_cavitation = s.cavitation;
-      valve.pilot.field_resolution = s.resolution;
-      valve.pilot.fixed_orifice_flow_model = valve.pilot.nozzle_flow_model = flow_model(s.model);
+      valve.pilot.field_solution.cavitation = s.cavitation;
+      valve.pilot.field_mesh.resolution = s.resolution;
+      valve.pilot.field_solution.fixed_orifice_flow_model = valve.pilot.field_solution.nozzle_flow_model = flow_model(s.model);
       const auto t0 = std::chrono::steady_clock::now();
       std::printf("%2zu %-50s %-15s: ", n, s.what, name(s.model));
       std::fflush(stdout);

@@ -74,7 +74,7 @@ int servodrift::bench::bench_mesh_convergence(int argc, char **argv)
     for (const bool cavitation : cavitation_modes)
       {
         ValveDescription v = base;
-        v.pilot.field_cavitation = cavitation;
+        v.pilot.field_solution.cavitation = cavitation;
         double C[3] = {0, 0, 0}, F[3] = {0, 0, 0};
         bool all = true;
         for (int j = 0; j < 3; ++j)
@@ -83,7 +83,7 @@ int servodrift::bench::bench_mesh_convergence(int argc, char **argv)
             c.resolution = resolutions[j];
             c.turbulence = FlowSolverParameters::Turbulence::k_epsilon;
             const auto t0 = std::chrono::steady_clock::now();
-            PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, gap);
+            PilotField nozzle(pilot_field_settings(v), PilotGeometry::nozzle_flapper, c, gap);
             try
               {
                 const PilotFieldResult r = nozzle.solve(dp);

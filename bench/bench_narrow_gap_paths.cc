@@ -6,7 +6,7 @@
 //              then this gap from its fields;
 //   descending the case at the sweep's largest pressure difference first, then down to its own.
 // Prints per path C_d, the flapper force, the cells that cavitate and the lowest absolute
-// pressure, then marches each path's state in time (`Pilot stage/Field time steps' steps) to see
+// pressure, then marches each path's state in time (`Pilot stage/Time average/Steps' steps) to see
 // whether it holds. Converged states that differ by more than the solver's tolerance are
 // distinct solutions of the same discrete equations; before PilotField's liquid check the paths
 // from the wider gap and from above kept cavities that collapse when marched (doc/validation.md,
@@ -40,19 +40,19 @@ namespace
                 r[minimum_absolute_pressure]);
     std::fflush(stdout);
   }
-  /// The state marched in time (`Pilot stage/Field time steps' steps of `Field time step Courant
-  /// number'): whether it holds (a stable steady state) or moves to another.
+  /// The state marched in time (`Pilot stage/Time average/Steps' steps of `Time average/
+  /// Courant number'): whether it holds (a stable steady state) or moves to another.
   void march(const char *path, const ValveDescription &valve, double T, double h, double dp, const FlowFields &start)
   {
-    PilotField field(valve, PilotGeometry::nozzle_flapper, pilot_field_case(valve, T), h);
+    PilotField field(pilot_field_settings(valve), PilotGeometry::nozzle_flapper, pilot_field_case(valve, T), h);
     field.set_fields(start);
-    const double dt = field.courant_time_step(valve.pilot.field_time_step_courant);
+    const double dt = field.courant_time_step(valve.pilot.time_average.courant_number);
     PilotFieldResult r;
     unsigned int capped = 0;
-    const unsigned int steps = valve.pilot.field_time_steps, tenth = std::max(1u, steps / 10);
+    const unsigned int steps = valve.pilot.time_average.steps, tenth = std::max(1u, steps / 10);
     for (unsigned int step = 1; step <= steps; ++step)
       {
-        r = field.advance(dp, dt, valve.pilot.field_time_step_iterations, step_tolerance);
+        r = field.advance(dp, dt, valve.pilot.time_average.step_iterations, step_tolerance);
         capped += !r.step_converged;
         if (step % tenth == 0 && step < steps) // the trajectory: whether and when a cavity collapses
           std::printf("%-10s   step %5u, t %.3g us: C_d %.5f, F %.5f N, cavitating %d, lowest pressure %.4g Pa\n", path,
@@ -63,7 +63,7 @@ namespace
     const std::size_t cavitating = static_cast<std::size_t>(std::count(f.cavitating.begin(), f.cavitating.end(), 1));
     std::printf("%-10s marched %u steps of %.3g s (%u capped): C_d %.5f, F %.5f N, %4zu cavitating cells, lowest "
                 "pressure %.4g Pa\n",
-                path, valve.pilot.field_time_steps, dt, capped, r.discharge_coefficient, r.flapper_force, cavitating,
+                path, valve.pilot.time_average.steps, dt, capped, r.discharge_coefficient, r.flapper_force, cavitating,
                 r.minimum_absolute_pressure);
     std::fflush(stdout);
   }
@@ -88,7 +88,7 @@ int servodrift::bench::bench_narrow_gap_paths(int argc, char **argv)
     }
   const std::vector<double> dps = scaled(valve.sweeps.field_nozzle_pressure_fractions, span(valve));
   std::printf("RV-1, %g degC, gap %g m, dp %g Pa, default flow model, cavitation %s\n", T, h, dp,
-              valve.pilot.field_cavitation ? "on" : "off");
+              valve.pilot.field_solution.cavitation ? "on" : "off");
   {
     Chain chain(valve, PilotGeometry::nozzle_flapper, T);
     const auto r = chain.solve(h, dp);

@@ -34,19 +34,20 @@ int servodrift::bench::bench_newton(int argc, char **argv)
   ValveDescription valve = load_valve_description("", {});
   const double dp = argc > 3 ? std::atof(argv[3]) : (which == "nozzle" ? 2e6 : 5e6);
   const double ratio = argc > 4 ? std::atof(argv[4]) : 1.25;
-  valve.pilot.field_cavitation = false;
-  valve.pilot.fixed_orifice_flow_model = valve.pilot.nozzle_flow_model = PilotStageParameters::FlowModel::laminar;
+  valve.pilot.field_solution.cavitation = false;
+  valve.pilot.field_solution.fixed_orifice_flow_model = valve.pilot.field_solution.nozzle_flow_model = PilotFieldSolutionParameters::FlowModel::laminar;
   const PilotGeometry geometry = which == "nozzle" ? PilotGeometry::nozzle_flapper : PilotGeometry::fixed_orifice;
   const PilotFieldCase c = pilot_field_case(valve, T);
   const double gap = valve.pilot.null_gap;
+  const PilotFieldSettings case_settings = pilot_field_settings(valve);
 
-  PilotField neighbour(valve, geometry, c, gap);
+  PilotField neighbour(case_settings, geometry, c, gap);
   auto t0 = std::chrono::steady_clock::now();
   neighbour.solve(dp / ratio);
   std::printf("%s, %g degC, laminar, single phase, %zu cells: neighbour at %.4g Pa by SIMPLEC in %.2f s\n",
               which.c_str(), T, neighbour.n_cells(), dp / ratio, seconds_since(t0));
 
-  PilotField simplec(valve, geometry, c, gap), newton(valve, geometry, c, gap);
+  PilotField simplec(case_settings, geometry, c, gap), newton(case_settings, geometry, c, gap);
   simplec.initialize_from(neighbour);
   newton.initialize_from(neighbour);
   t0 = std::chrono::steady_clock::now();
@@ -90,7 +91,7 @@ int servodrift::bench::bench_newton(int argc, char **argv)
   // from rest: the fields zero, the pressure difference applied at once (PTC's time-like path)
   for (const double cfl : {1e-2, 1.0, 100.0})
     {
-      PilotField rest(valve, geometry, c, gap);
+      PilotField rest(case_settings, geometry, c, gap);
       rest.solver().set_boundary_pressure("inlet", dp);
       PtcSettings s = settings;
       s.initial_cfl = cfl;

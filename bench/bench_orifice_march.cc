@@ -83,7 +83,7 @@ int servodrift::bench::bench_orifice_march(int argc, char **argv)
       return 2;
     }
   const auto t0 = std::chrono::steady_clock::now();
-  valve.pilot.fixed_orifice_flow_model = PilotStageParameters::FlowModel::k_epsilon;
+  valve.pilot.field_solution.fixed_orifice_flow_model = PilotFieldSolutionParameters::FlowModel::k_epsilon;
   Chain k_epsilon(valve, PilotGeometry::fixed_orifice, T);
   k_epsilon.solve(0, start_dp);
   const std::vector<double> r = k_epsilon.solve(0, dp);
@@ -94,13 +94,13 @@ int servodrift::bench::bench_orifice_march(int argc, char **argv)
 
   PilotFieldCase c = pilot_field_case(valve, T);
   c.turbulence = FlowSolverParameters::Turbulence::k_epsilon_launder_sharma;
-  PilotField field(valve, PilotGeometry::fixed_orifice, c);
+  PilotField field(pilot_field_settings(valve), PilotGeometry::fixed_orifice, c);
   field.set_fields(k_epsilon.state()->fields);
   FlowFields old = field.fields();
   if (old.liquid_fraction.empty()) // set before the cavitation model is on
     old.liquid_fraction.assign(field.n_cells(), 1.0), old.cavitating.assign(field.n_cells(), 0);
   const FvMesh &mesh = field.mesh();
-  const TimeAverage a = time_average(field, dp, valve.pilot, [&](unsigned int step, unsigned int, double time,
+  const TimeAverage a = time_average(field, dp, valve.pilot.time_average, [&](unsigned int step, unsigned int, double time,
                                                                  const PilotFieldResult &s) {
     FlowFields now = field.fields();
     if (!s.step_converged)

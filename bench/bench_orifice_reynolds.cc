@@ -1,7 +1,7 @@
 // Study driver (issue 5): RV-1's fixed orifice against the Lichtarowicz correlation E21 over
 // Re_0 = 100 ... 2e4. The pressure difference stays at 10.3 MPa (40 degC, cavitation off: E21 is a
 // single-phase correlation) and Re_0 is set by the viscosity, one case continuing from the last.
-// Laminar below the stage's switch (`Pilot stage/Fixed orifice transition Reynolds number', 1000),
+// Laminar below the stage's switch (`Pilot stage/Field solution/Fixed orifice transition Reynolds number', 1000),
 // two-layer k-epsilon from it on; both models are run at the switch itself. Prints one row per case
 // (data for scripts/orifice-reynolds, which plots doc/figures/orifice_lichtarowicz.*) with the
 // iterations and wall time of each case.
@@ -22,7 +22,7 @@ using namespace servodrift::flow;
 
 int servodrift::bench::bench_orifice_reynolds(int argc, char **argv)
 {
-  std::vector<std::string> settings{"Output/Progress=none", "Pilot stage/Field cavitation=false"};
+  std::vector<std::string> settings{"Output/Progress=none", "Pilot stage/Field solution/Cavitation=false"};
   for (int a = 1; a < argc; ++a)
     settings.emplace_back(argv[a]);
   const ValveDescription valve = load_valve_description("", settings);
@@ -32,7 +32,7 @@ int servodrift::bench::bench_orifice_reynolds(int argc, char **argv)
   // Re_0 is inversely proportional to the viscosity at a fixed dp
   const double reynolds_at_T = closed_forms.fixed_orifice(dp).reynolds_number;
   const double length_over_diameter = valve.pilot.fixed_orifice_length / valve.pilot.fixed_orifice_diameter;
-  const double switch_reynolds = valve.pilot.fixed_orifice_transition_reynolds;
+  const double switch_reynolds = valve.pilot.field_solution.fixed_orifice_transition_reynolds;
   using Turbulence = FlowSolverParameters::Turbulence;
   struct Point
   {
@@ -54,7 +54,7 @@ int servodrift::bench::bench_orifice_reynolds(int argc, char **argv)
       PilotFieldCase c = at_T;
       c.turbulence = point.model;
       c.fluid.viscosity = at_T.fluid.viscosity * reynolds_at_T / point.reynolds_number;
-      auto orifice = std::make_unique<PilotField>(valve, PilotGeometry::fixed_orifice, c);
+      auto orifice = std::make_unique<PilotField>(pilot_field_settings(valve), PilotGeometry::fixed_orifice, c);
       if (previous)
         orifice->initialize_from(*previous);
       const auto t0 = std::chrono::steady_clock::now();

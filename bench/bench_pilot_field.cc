@@ -63,7 +63,7 @@ int servodrift::bench::bench_pilot_field(int argc, char **argv)
         c.resolution = resolution;
         c.turbulence = model;
         const auto t0 = std::chrono::steady_clock::now();
-        PilotField nozzle(valve, PilotGeometry::nozzle_flapper, c, 40e-6);
+        PilotField nozzle(pilot_field_settings(valve), PilotGeometry::nozzle_flapper, c, 40e-6);
         try
           {
             const PilotFieldResult r = nozzle.solve(10.4e6);

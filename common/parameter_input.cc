@@ -4,6 +4,8 @@
 
 #include "common/error.h"
 #include "common/parameter_messages.h"
+#include "common/parameters/renamed_entries.h"
+#include "common/sweep.h"
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
@@ -18,7 +20,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <mutex>
 #include <optional>
+#include <set>
 #include <sstream>
 
 namespace servodrift
@@ -59,6 +64,128 @@ namespace servodrift
       if (b == std::string::npos)
         return std::nullopt;
       return s.substr(a + open.size(), b - a - open.size());
+    }
+
+    // ---- moved entries -------------------------------------------------------------------------------
+    /// Prints a warning on rank 0, each distinct one once per process (a run reads its description
+    /// more than once)
+    void warn_once(const std::string &line)
+    {
+      static std::mutex mutex;
+      static std::set<std::string> printed;
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (mpi_rank() == 0 && printed.insert(line).second)
+        std::cerr << line << std::endl;
+    }
+
+    /// Sets `value' at `path' ("A/B/Key", from the handler's top level). Returns the allowed
+    /// pattern if deal.II refuses the value.
+    std::optional<std::string> set_at_path(ParameterHandler &prm, const std::string &path, const std::string &value)
+    {
+      std::vector<std::string> sections;
+      std::string key = path;
+      for (std::size_t slash; (slash = key.find('/')) != std::string::npos; key = key.substr(slash + 1))
+        sections.push_back(key.substr(0, slash));
+      for (const auto &section : sections)
+        prm.enter_subsection(section);
+      std::optional<std::string> refused;
+      try
+        {
+          prm.set(key, value);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          refused = mismatched_pattern(e).value_or("see `servodrift params'");
+        }
+      for (std::size_t k = 0; k < sections.size(); ++k)
+        prm.leave_subsection();
+      return refused;
+    }
+
+    /// The values a parameter file sets under moved entries' old paths: taken out while the file is
+    /// read, set at their new paths afterwards, each with its deprecation warning.
+    class MovedEntries
+    {
+    public:
+      /// `path' set in the file; true (and the value kept) if it is a moved entry's old path
+      bool take(const std::string &path, const std::string &value, const std::string &where)
+      {
+        const RenamedEntry *entry = renamed_entry(path);
+        if (entry == nullptr)
+          {
+            set_paths.insert(path);
+            return false;
+          }
+        values.push_back({entry, value, where});
+        return true;
+      }
+
+      /// Sets the values taken at their new paths. Throws InputError if the file also sets the new
+      /// path (one entry set twice under two names) or deal.II refuses the value.
+      void apply(ParameterHandler &prm) const
+      {
+        for (const auto &[entry, value, where] : values)
+          {
+            if (set_paths.count(entry->new_path) != 0)
+              throw InputError(where + ": `" + entry->old_path + "' is the old name of `" + entry->new_path +
+                               "', which the file sets too; keep one");
+            if (const auto pattern = set_at_path(prm, entry->new_path, value))
+              throw InputError(where + ": `" + entry->old_path + "' (now `" + entry->new_path + "') = " +
+                               shown_input(value) + " is not allowed; allowed: " + *pattern);
+            warn_once(deprecation_warning(where, *entry));
+          }
+      }
+
+    private:
+      struct Value
+      {
+        const RenamedEntry *entry;
+        std::string value, where;
+      };
+      std::vector<Value> values;
+      std::set<std::string> set_paths;
+    };
+
+    /// The PRM text with every `set' of a moved entry blanked (its lines kept, so that deal.II's
+    /// line numbers stay the file's), the values taken by `moved'.
+    std::string without_moved_entries(const std::string &text, const std::string &file, MovedEntries &moved)
+    {
+      std::vector<std::string> lines;
+      std::istringstream in(text);
+      for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
+      std::vector<std::string> path;
+      for (std::size_t k = 0; k < lines.size();)
+        {
+          const std::size_t first = k;
+          std::string logical; // a line and the lines its trailing backslashes continue it with
+          for (bool continued = true; continued && k < lines.size(); ++k)
+            {
+              std::string line = lines[k];
+              const auto last = line.find_last_not_of(" \t\r");
+              continued = last != std::string::npos && line[last] == '\\';
+              logical += continued ? line.substr(0, last) : line;
+            }
+          const std::string statement = collapse_whitespace(logical.substr(0, logical.find('#')));
+          if (statement.rfind("subsection ", 0) == 0)
+            path.push_back(statement.substr(11));
+          else if (statement == "end" && !path.empty())
+            path.pop_back();
+          else if (statement.rfind("set ", 0) == 0 && statement.find('=') != std::string::npos)
+            {
+              const auto eq = statement.find('=');
+              const std::string key = collapse_whitespace(statement.substr(4, eq - 4));
+              const std::string value = collapse_whitespace(statement.substr(eq + 1));
+              const std::string where = file + ":" + std::to_string(first + 1);
+              if (moved.take(joined(path) + "/" + key, value, where))
+                for (std::size_t j = first; j < k; ++j)
+                  lines[j].clear();
+            }
+        }
+      std::string out;
+      for (const auto &line : lines)
+        out += line + "\n";
+      return out;
     }
 
     // ---- files ------------------------------------------------------------------------------------
@@ -134,7 +261,15 @@ namespace servodrift
                                                                                            info.find(": ", file_end) + 2);
       const int line = std::atoi(number->c_str());
       const std::string at = in_file + ":" + *number + ": ";
-      const std::string section = in_file == file ? subsection_at_line(text, line) : "";
+      std::string section;
+      try
+        {
+          section = subsection_at_line(in_file == file ? text : text_file(in_file, "a parameter file to include"), line);
+        }
+      catch (const InputError &)
+        {
+          // an included file that cannot be read again: the message names no subsection
+        }
 
       const std::string value_mark = "The entry value ", name_mark = " for the entry named ",
                         pattern_mark = " does not match the given pattern: ";
@@ -153,6 +288,9 @@ namespace servodrift
           std::vector<std::string> path;
           for (std::string s = section; !s.empty(); s = s.substr(s.find('/') + 1))
             path.push_back(s.substr(0, s.find('/')));
+          if (const RenamedEntry *moved = renamed_entry(section + *entry))
+            return at + "`" + moved->old_path + "' is now `" + moved->new_path +
+                   "' (an included file is read as written: rename it there)";
           return at + "no entry `" + shown_input(*entry) + "'" + where +
                  suggestion(*entry, declared_names(prm, path, false)) + list_hint;
         }
@@ -200,7 +338,7 @@ namespace servodrift
     /// Sets every entry of a JSON object tree: nested objects are subsections, a leaf (or an
     /// object with a "value" member, as `servodrift params --format json' writes) is an entry.
     void set_json_entries(ParameterHandler &prm, const ptree &tree, const std::string &file,
-                          std::vector<std::string> &path)
+                          std::vector<std::string> &path, MovedEntries &moved)
     {
       for (const auto &[key, node] : tree)
         {
@@ -213,6 +351,8 @@ namespace servodrift
               if (path.empty())
                 throw InputError(file + ": `" + entry + "' is a value at top level; every entry lives in a subsection");
               const std::string text = collapse_whitespace(value ? value->data() : node.data());
+              if (moved.take(joined(path) + "/" + key, text, file))
+                continue;
               try
                 {
                   prm.set(key, text);
@@ -233,7 +373,7 @@ namespace servodrift
                 throw InputError(file + ": no subsection `" + entry + "'" +
                                  suggestion(key, declared_names(prm, {path.begin(), path.end() - 1}, true)) + list_hint);
               prm.enter_subsection(key);
-              set_json_entries(prm, node, file, path);
+              set_json_entries(prm, node, file, path, moved);
               prm.leave_subsection();
               path.pop_back();
             }
@@ -254,10 +394,14 @@ namespace servodrift
       if (extension == ".prm")
         check_includes(file, chain);
       const std::string text = text_file(file, "a parameter file");
+      MovedEntries moved;
       try
         {
           if (extension == ".prm")
-            prm.parse_input(file);
+            {
+              std::istringstream in(without_moved_entries(text, file, moved));
+              prm.parse_input(in, file);
+            }
           else
             {
               check_json_shape(file, text);
@@ -265,8 +409,9 @@ namespace servodrift
               ptree tree;
               boost::property_tree::read_json(in, tree);
               std::vector<std::string> path;
-              set_json_entries(prm, tree, file, path);
+              set_json_entries(prm, tree, file, path, moved);
             }
+          moved.apply(prm);
         }
       catch (const InputError &)
         {
@@ -301,6 +446,12 @@ namespace servodrift
       const std::string key = collapse_whitespace(path);
       if (sections.empty())
         throw InputError(where + ": expected \"Subsection/Key=value\"; every entry lives in a subsection");
+      if (const RenamedEntry *moved = renamed_entry(joined(sections) + "/" + key))
+        {
+          warn_once(deprecation_warning(where, *moved));
+          apply_override(prm, moved->new_path + "=" + value);
+          return;
+        }
       for (std::size_t k = 1; k <= sections.size(); ++k)
         {
           const std::vector<std::string> head(sections.begin(), sections.begin() + k);
@@ -336,6 +487,15 @@ namespace servodrift
     }
 
   } // namespace
+
+  std::string current_entry_path(const std::string &path, const std::string &where)
+  {
+    const RenamedEntry *moved = renamed_entry(path);
+    if (moved == nullptr)
+      return path;
+    warn_once(deprecation_warning(where, *moved));
+    return moved->new_path;
+  }
 
   void read_parameters(ParameterHandler &prm, const std::string &input_file, const std::vector<std::string> &overrides)
   {

@@ -19,6 +19,10 @@ namespace servodrift
   void read_parameters(dealii::ParameterHandler &prm, const std::string &input_file,
                        const std::vector<std::string> &overrides);
 
+  /// `path' ("Subsection/Key"), or its new path if it names a moved entry
+  /// (common/parameters/renamed_entries.h), with a one-line deprecation warning naming `where'.
+  std::string current_entry_path(const std::string &path, const std::string &where);
+
   /// User text as a message may show it: whitespace runs as one space, other control or non-ASCII
   /// bytes as '?', at most `limit' characters (then "... (N characters)").
   std::string shown_input(const std::string &text, std::size_t limit = 80);

@@ -11,10 +11,10 @@ namespace servodrift
   using units::pi;
 
   PilotClosedForms::PilotClosedForms(const ValveDescription &valve, double temperature)
-    : orifice_law(valve.pilot.fixed_orifice_law)
-    , nozzle_law(valve.pilot.nozzle_law)
-    , force_law(valve.pilot.flapper_force_law)
-    , curtain_discharge_coefficient(valve.pilot.nozzle_discharge_coefficient)
+    : orifice_law(valve.pilot.reduced_order.fixed_orifice_law)
+    , nozzle_law(valve.pilot.reduced_order.nozzle_law)
+    , force_law(valve.pilot.reduced_order.flapper_force_law)
+    , curtain_discharge_coefficient(valve.pilot.reduced_order.nozzle_discharge_coefficient)
     , g(laws::pilot_stage_geometry(valve.pilot, valve.armature, valve.expansion, temperature,
                                    valve.operating.reference_temperature))
     , T(temperature)
@@ -24,7 +24,7 @@ namespace servodrift
     nu = oil.kinematic_viscosity(T).value;
     mu = rho * nu;
 
-    if (force_law == PilotStageParameters::FlapperForceLaw::paper_table)
+    if (force_law == PilotReducedOrderParameters::FlapperForceLaw::paper_table)
       {
         // Scale E23 so that the blocked-bridge flow-force stiffness at null equals the paper's K_f(T):
         // K_f,E23 by central differences of the bridge with the momentum force (1.10, 4.2).
@@ -57,7 +57,7 @@ namespace servodrift
     const double D0 = g.fixed_orifice_diameter, A0 = 0.25 * pi * D0 * D0;
     const double ideal_velocity = std::sqrt(2 * dp / rho);
     s.reynolds_number = D0 * ideal_velocity / nu; // E17: on the ideal velocity
-    if (orifice_law == PilotStageParameters::OrificeLaw::lichtarowicz)
+    if (orifice_law == PilotReducedOrderParameters::OrificeLaw::lichtarowicz)
       {
         s.discharge_coefficient = lichtarowicz_discharge_coefficient(s.reynolds_number, g.fixed_orifice_length / D0);
       }
@@ -77,7 +77,7 @@ namespace servodrift
     const double DN = g.nozzle_diameter;
     const double curtain = pi * DN * h; // curtain area of the gap
     const double ideal_velocity = std::sqrt(2 * dp / rho);
-    if (nozzle_law == PilotStageParameters::NozzleLaw::curtain)
+    if (nozzle_law == PilotReducedOrderParameters::NozzleLaw::curtain)
       {
         if (h > 0 && dp > 0)
           {

@@ -54,9 +54,9 @@ namespace servodrift
     const laws::PilotStageGeometry &geometry() const { return g; }
 
   private:
-    PilotStageParameters::OrificeLaw orifice_law;
-    PilotStageParameters::NozzleLaw nozzle_law;
-    PilotStageParameters::FlapperForceLaw force_law;
+    PilotReducedOrderParameters::OrificeLaw orifice_law;
+    PilotReducedOrderParameters::NozzleLaw nozzle_law;
+    PilotReducedOrderParameters::FlapperForceLaw force_law;
     double curtain_discharge_coefficient; ///< C_d,inf of E22 [1]
     laws::PilotStageGeometry g;
     double T, rho, nu, mu;

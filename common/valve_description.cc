@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "common/parameter_input.h"
 #include "common/parameters/parameter_helpers.h"
+#include "common/parameters/renamed_entries.h"
 #include "common/provenance.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -227,6 +228,12 @@ namespace servodrift
               << "| subsection | entry | default (RV-1) | unit | allowed | meaning |\n"
               << "|---|---|---|---|---|---|\n";
             markdown_rows(tree, "", s);
+            s << "\n## Moved entries\n\n"
+              << "Read under their old paths too, from a parameter file, a JSON file, `--set` or `--free`, "
+                 "with a one-line deprecation warning (`common/parameters/renamed_entries.cc`).\n\n"
+              << "| old path | now |\n|---|---|\n";
+            for (const auto &entry : renamed_entries())
+              s << "| `" << entry.old_path << "` | `" << entry.new_path << "` |\n";
             break;
           }
       }

@@ -102,8 +102,8 @@ namespace servodrift
         refuse(entry, "ends with " + format_number(list->back()) +
                         "; it must end with 1 (p_s - p_r) for `servodrift run': the pilot bridge's control "
                         "pressure may lie anywhere between return and supply");
-    if (!v.pilot.model_form_alternatives.empty() && v.pilot.model_level != ModelLevel::field)
-      refuse("Pilot stage/Model-form alternatives",
+    if (!v.pilot.field_solution.model_form_alternatives.empty() && v.pilot.model_level != ModelLevel::field)
+      refuse("Pilot stage/Field solution/Model-form alternatives",
              "lists other flow models, which only the field level has; set `Pilot stage/Model level' = field or "
              "leave it empty");
   }
@@ -112,7 +112,7 @@ namespace servodrift
   {
     // Each struct's checks in the order of the refusals: a description with several faults is
     // refused for the first fault in this order
-    v.pilot.validate_time_average();
+    v.pilot.time_average.validate();
     v.operating.validate();
     v.sweeps.validate();
 

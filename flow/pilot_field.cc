@@ -6,6 +6,7 @@
 #include "common/gmsh_mesh.h"
 #include "common/thermal_laws.h"
 #include "common/units.h"
+#include "common/valve_description.h"
 
 #include <algorithm>
 #include <cmath>
@@ -59,7 +60,7 @@ namespace servodrift::flow
     /// checks' 10 959 iterations fewer, the decisions and tables unchanged (doc/method.md).
     constexpr double liquid_check_decision_residual = 1e-1;
     constexpr double liquid_check_decision_margin = 0.1;
-    /// Grid sequencing (`Pilot stage/Field grid sequencing'): a case at rest on a mesh of this
+    /// Grid sequencing (`Pilot stage/Field mesh/Grid sequencing'): a case at rest on a mesh of this
     /// resolution or finer is first solved on the mesh of half its resolution (a quarter of the
     /// cells, itself sequenced if fine enough), and starts from those fields carried over
     /// (transfer_fields). The start-up ladder's iterations
@@ -82,18 +83,17 @@ namespace servodrift::flow
       return levels;
     }
 
-    FvMesh make_mesh(const ValveDescription &valve, PilotGeometry kind, const PilotFieldCase &c, double h,
+    FvMesh make_mesh(const PilotFieldMeshParameters &settings, PilotGeometry kind, const PilotFieldCase &c, double h,
                      double &bore_radius)
     {
-      const auto g = laws::pilot_stage_geometry(valve.pilot, valve.armature, valve.expansion, c.temperature,
-                                                valve.operating.reference_temperature);
+      const auto &g = c.dimensions;
       if (kind == PilotGeometry::fixed_orifice)
         {
-          const double r0 = 0.5 * g.fixed_orifice_diameter, plenum = valve.pilot.field_plenum_size * r0;
+          const double r0 = 0.5 * g.fixed_orifice_diameter, plenum = settings.plenum_size * r0;
           bore_radius = r0;
           const std::map<std::string, double> parameters{
             {"r0", r0 / mm},           {"l", g.fixed_orifice_length / mm}, {"ru", plenum / mm},
-            {"lu", plenum / mm},       {"rd", 8 * r0 / mm},                {"ld", valve.pilot.field_chamber_length * r0 / mm},
+            {"lu", plenum / mm},       {"rd", 8 * r0 / mm},                {"ld", settings.chamber_length * r0 / mm},
             {"res", c.resolution}};
           return FvMesh(mesh_template_all_groups({"meshes/fixed_orifice.geo", embedded::fixed_orifice_geo, mm, "Pilot stage"}, parameters),
                         Geometry::axisymmetric, "meshes/fixed_orifice.geo");
@@ -103,7 +103,7 @@ namespace servodrift::flow
       if (!(h > 0) || !std::isfinite(h))
         throw InputError("flow: nozzle-flapper gap " + format_number(h) + " m must be > 0 at the field level");
       const std::map<std::string, double> parameters{
-        {"rn", rn / mm},     {"rl", rl / mm},     {"h", h / mm},       {"ro", valve.pilot.field_outlet_radius * rl / mm},
+        {"rn", rn / mm},     {"rl", rl / mm},     {"h", h / mm},       {"ro", settings.outlet_radius * rl / mm},
         {"rc", 2 * rn / mm}, {"lc", 2 * rn / mm}, {"lb", nozzle_bore_length_in_radii * rn / mm}, {"le", 2 * rn / mm},
         {"res", c.resolution}};
       return FvMesh(mesh_template_all_groups({"meshes/nozzle_flapper.geo", embedded::nozzle_flapper_geo, mm, "Pilot stage"}, parameters),
@@ -124,29 +124,39 @@ namespace servodrift::flow
     }
 
     /// The valve's flow solver settings for a case of this geometry with flow model t (the nozzle's
-    /// own stall window, `Pilot stage/Nozzle stall window').
-    FlowSolverParameters solver_settings(const ValveDescription &valve, PilotGeometry kind,
+    /// own stall window, `Pilot stage/Field solution/Nozzle stall window').
+    FlowSolverParameters solver_settings(const PilotFieldSettings &settings, PilotGeometry kind,
                                          FlowSolverParameters::Turbulence t)
     {
-      FlowSolverParameters s = valve.flow_solver;
+      FlowSolverParameters s = settings.solver;
       s.turbulence = t;
       if (kind == PilotGeometry::nozzle_flapper)
-        s.stall_window = valve.pilot.nozzle_stall_window;
+        s.stall_window = settings.solution.nozzle_stall_window;
       return s;
     }
   } // namespace
 
+  PilotFieldSettings pilot_field_settings(const ValveDescription &valve)
+  {
+    const auto &operating = valve.operating;
+    return {valve.pilot.field_mesh,        valve.pilot.field_solution,    valve.flow_solver,
+            operating.supply_pressure,     operating.return_pressure,     operating.ambient_pressure,
+            valve.fluid.vapour_pressure};
+  }
+
   PilotFieldCase pilot_field_case(const ValveDescription &valve, double T)
   {
-    const laws::Oil oil(valve.fluid, valve.operating.reference_temperature);
+    const double T0 = valve.operating.reference_temperature;
+    const laws::Oil oil(valve.fluid, T0);
     oil.check_temperature(T, "flow case temperature");
-    return {T, {oil.density(T).value, oil.dynamic_viscosity(T)}, valve.pilot.field_resolution, valve.flow_solver.turbulence};
+    return {T, {oil.density(T).value, oil.dynamic_viscosity(T)}, valve.pilot.field_mesh.resolution, valve.flow_solver.turbulence,
+            laws::pilot_stage_geometry(valve.pilot, valve.armature, valve.expansion, T, T0)};
   }
 
   struct PilotField::Implementation
   {
     PilotGeometry kind;
-    ValveDescription valve;
+    PilotFieldSettings settings;
     PilotFieldCase conditions;
     double gap, bore_radius = 0;
     FvMesh mesh;
@@ -156,17 +166,17 @@ namespace servodrift::flow
     /// the pressure level the solver's settings were last prepared for (prepare_level); 0 after
     /// set_fields(), whose fields bring their inlet pressure but not the cavitation model's state
     double prepared_level = 0;
-    double continuation_ratio; ///< largest ratio of successive pressure levels (`Field continuation ratio')
+    double continuation_ratio; ///< largest ratio of successive pressure levels (`Field solution/Continuation ratio')
     std::vector<unsigned int> exit_faces; ///< nozzle: interior faces of the bore's exit section x = 0, r < r_N
 
-    Implementation(const ValveDescription &valve_, PilotGeometry kind_, const PilotFieldCase &c, double h)
+    Implementation(const PilotFieldSettings &settings_, PilotGeometry kind_, const PilotFieldCase &c, double h)
       : kind(kind_)
-      , valve(valve_)
+      , settings(settings_)
       , conditions(c)
       , gap(h)
-      , mesh(make_mesh(valve_, kind_, c, h, bore_radius))
-      , solver(mesh, c.fluid, boundaries(kind_), solver_settings(valve_, kind_, c.turbulence))
-      , continuation_ratio(valve_.pilot.field_continuation_ratio)
+      , mesh(make_mesh(settings_.mesh, kind_, c, h, bore_radius))
+      , solver(mesh, c.fluid, boundaries(kind_), solver_settings(settings_, kind_, c.turbulence))
+      , continuation_ratio(settings_.solution.continuation_ratio)
     {
       if (kind == PilotGeometry::nozzle_flapper)
         {
@@ -177,7 +187,7 @@ namespace servodrift::flow
               exit_faces.push_back(f);
         }
       // converged when, besides the residuals, Q (and the flapper force) settle (issue 5)
-      const auto &s = valve.flow_solver;
+      const auto &s = settings.solver;
       solver.set_convergence_monitor(
         [this] {
           std::vector<double> m{solver.flow_rate("outlet")};
@@ -198,9 +208,8 @@ namespace servodrift::flow
     /// downstream of the orifice, the return pressure downstream of the nozzle (gauge + ambient).
     double downstream_pressure(double dp) const
     {
-      const auto &operating = valve.operating;
-      return (kind == PilotGeometry::fixed_orifice ? operating.supply_pressure - dp : operating.return_pressure) +
-             operating.ambient_pressure;
+      return (kind == PilotGeometry::fixed_orifice ? settings.supply_pressure - dp : settings.return_pressure) +
+             settings.ambient_pressure;
     }
 
     /// One step of the solution path: the fields scaled to the pressure level dp (from the inlet
@@ -208,8 +217,8 @@ namespace servodrift::flow
     /// (an intermediate level only to `intermediate_tolerance' if that is > 0).
     SolveReport solve_at(double dp, double intermediate_tolerance = 0)
     {
-      prepare_level(solver, dp, valve.pilot.field_cavitation);
-      return intermediate_tolerance > 0 ? solver.solve_to(std::max(intermediate_tolerance, valve.flow_solver.tolerance), false) :
+      prepare_level(solver, dp, settings.solution.cavitation);
+      return intermediate_tolerance > 0 ? solver.solve_to(std::max(intermediate_tolerance, settings.solver.tolerance), false) :
                                           solver.solve();
     }
 
@@ -224,10 +233,10 @@ namespace servodrift::flow
       s.set_boundary_pressure("inlet", dp);
       if (&s == &solver)
         prepared_level = dp;
-      s.set_turbulent_viscosity_limit(valve.pilot.field_turbulent_viscosity_limit * ideal_reynolds_number(dp));
+      s.set_turbulent_viscosity_limit(settings.solution.turbulent_viscosity_limit * ideal_reynolds_number(dp));
       at_rest = false;
       if (cavitation)
-        s.set_cavitation_pressure(valve.fluid.vapour_pressure - downstream_pressure(dp));
+        s.set_cavitation_pressure(settings.vapour_pressure - downstream_pressure(dp));
     }
 
     /// What the current fields give at pressure difference dp (model.md 4.2): Q, C_d, Re, the
@@ -244,7 +253,7 @@ namespace servodrift::flow
       coarse_case.resolution = 0.5 * conditions.resolution;
       try
         {
-          PilotField coarse(valve, kind, coarse_case, gap);
+          PilotField coarse(settings, kind, coarse_case, gap);
           const PilotFieldResult r = coarse.solve(dp);
           coarse_iterations += r.iterations + r.coarse_mesh_iterations;
           solver.set_fields(transfer_fields(coarse.impl->mesh, coarse.impl->solver.fields(), mesh));
@@ -276,14 +285,14 @@ namespace servodrift::flow
     {
       FlowFields start = solver.fields();
       start.liquid_fraction.clear(), start.cavitating.clear(); // set_fields: every cell liquid
-      SimplecSolver liquid(mesh, conditions.fluid, boundaries(kind), solver_settings(valve, kind, conditions.turbulence));
+      SimplecSolver liquid(mesh, conditions.fluid, boundaries(kind), solver_settings(settings, kind, conditions.turbulence));
       liquid.set_fields(start);
-      const double tolerance = std::max(liquid_check_tolerance, valve.flow_solver.tolerance);
+      const double tolerance = std::max(liquid_check_tolerance, settings.solver.tolerance);
       const auto lowest_absolute_pressure = [&] { return downstream_pressure(dp) + liquid.minimum_pressure(); };
       // an answer that is already clear: the liquid flow far below the vapour pressure (at its own level)
       const std::function<bool(const Residuals &)> clearly_cavitating = [&](const Residuals &r) {
         return largest_residual(r) < liquid_check_decision_residual &&
-               lowest_absolute_pressure() < valve.fluid.vapour_pressure - liquid_check_decision_margin * dp;
+               lowest_absolute_pressure() < settings.vapour_pressure - liquid_check_decision_margin * dp;
       };
       unsigned int iterations = 0;
       try
@@ -294,7 +303,7 @@ namespace servodrift::flow
               const auto decided = level == dp ? clearly_cavitating : std::function<bool(const Residuals &)>();
               iterations += liquid.solve_to(tolerance, false, decided).iterations;
             }
-          if (lowest_absolute_pressure() >= valve.fluid.vapour_pressure)
+          if (lowest_absolute_pressure() >= settings.vapour_pressure)
             solver.set_fields(liquid.fields());
         }
       catch (const std::runtime_error &)
@@ -315,7 +324,7 @@ namespace servodrift::flow
     unsigned int start_up(double dp)
     {
       const double Re = ideal_reynolds_number(dp);
-      FlowSolverParameters s = solver_settings(valve, kind, FlowSolverParameters::Turbulence::laminar);
+      FlowSolverParameters s = solver_settings(settings, kind, FlowSolverParameters::Turbulence::laminar);
       s.tolerance = std::max(s.tolerance, start_up_tolerance);
       SimplecSolver laminar(mesh, conditions.fluid, boundaries(kind), s);
       laminar.failure_output = solver.failure_output;
@@ -340,8 +349,8 @@ namespace servodrift::flow
     }
   };
 
-  PilotField::PilotField(const ValveDescription &valve, PilotGeometry geometry, const PilotFieldCase &c, double gap)
-    : impl(std::make_unique<Implementation>(valve, geometry, c, gap))
+  PilotField::PilotField(const PilotFieldSettings &settings, PilotGeometry geometry, const PilotFieldCase &c, double gap)
+    : impl(std::make_unique<Implementation>(settings, geometry, c, gap))
   {}
   PilotField::~PilotField() = default;
   PilotField::PilotField(PilotField &&) noexcept = default;
@@ -359,14 +368,14 @@ namespace servodrift::flow
     // level stays (it only grows with the pressure difference: the quasi-static path), whether
     // carried on or given back by the chain's retries or model switches
     const bool cavity_from_below = d.carries_cavity() && d.solver.boundary_pressure("inlet") <= dp;
-    if (!d.at_rest && d.valve.pilot.field_cavitation && (d.fields_from_elsewhere || !cavity_from_below))
+    if (!d.at_rest && d.settings.solution.cavitation && (d.fields_from_elsewhere || !cavity_from_below))
       r.iterations += d.check_liquid_flow(dp);
     d.fields_from_elsewhere = false;
-    if (d.at_rest && !(d.valve.pilot.field_grid_sequencing && d.conditions.resolution >= grid_sequencing_resolution &&
+    if (d.at_rest && !(d.settings.mesh.grid_sequencing && d.conditions.resolution >= grid_sequencing_resolution &&
                        d.start_from_coarser_mesh(dp, r.coarse_mesh_iterations)))
       r.iterations += d.start_up(dp);
     // continuation from the last fields to dp, through geometric intermediate levels no more than
-    // the continuation ratio apart (the quasi-static path; `Field continuation ratio')
+    // the continuation ratio apart (the quasi-static path; `Field solution/Continuation ratio')
     SolveReport report;
     for (const double level : continuation_levels(d.solver.boundary_pressure("inlet"), dp, d.continuation_ratio))
       {
@@ -376,9 +385,9 @@ namespace servodrift::flow
     r.pressure_relaxation = report.pressure_relaxation;
     if (report.cells_at_viscosity_limit > 0)
       throw NotConverged(std::string("flow: ") + what + ": converged with the turbulent viscosity held at its limit (" +
-                         format_number(d.valve.pilot.field_turbulent_viscosity_limit) + " Re mu) in " +
+                         format_number(d.settings.solution.turbulent_viscosity_limit) + " Re mu) in " +
                          std::to_string(report.cells_at_viscosity_limit) +
-                         " cells: not the model's solution; raise `Pilot stage/Field turbulent viscosity limit'");
+                         " cells: not the model's solution; raise `Pilot stage/Field solution/Turbulent viscosity limit'");
     const PilotFieldResult fields = d.result_of(dp, MeteredAt::outlet);
     const unsigned int iterations = r.iterations, coarse = r.coarse_mesh_iterations;
     const double relaxation = r.pressure_relaxation;
@@ -390,7 +399,7 @@ namespace servodrift::flow
   PilotFieldResult PilotField::Implementation::result_of(double dp, MeteredAt metered) const
   {
     return extract_pilot_result(solver, mesh, {kind, gap, bore_radius, exit_faces}, conditions,
-                                valve.fluid.vapour_pressure, downstream_pressure(dp), dp, metered);
+                                settings.vapour_pressure, downstream_pressure(dp), dp, metered);
   }
 
   PilotFieldResult PilotField::advance(double dp, double dt, unsigned int max_iterations, double tolerance)
@@ -399,7 +408,7 @@ namespace servodrift::flow
     // after set_fields() too: the given fields carry their pressure level, but a march without
     // prepare_level would run without the cavitation model
     if (d.prepared_level != dp || d.solver.boundary_pressure("inlet") != dp)
-      d.prepare_level(d.solver, dp, d.valve.pilot.field_cavitation);
+      d.prepare_level(d.solver, dp, d.settings.solution.cavitation);
     const SolveReport step = d.solver.advance(dt, max_iterations, tolerance);
     PilotFieldResult r = d.result_of(dp, MeteredAt::inlet);
     r.iterations = step.iterations;

@@ -5,7 +5,7 @@
 //
 // A case is solved at one pressure difference after another, each from the last converged fields
 // scaled to the new pressure level (continuation), through intermediate levels where the step is
-// larger than `Field continuation ratio' (the quasi-static path: laminar cavitating cases have more
+// larger than `Field solution/Continuation ratio' (the quasi-static path: laminar cavitating cases have more
 // than one steady solution); a case can also start from another case's fields of the same mesh
 // topology (another gap or temperature, or a laminar solution under a turbulent case). A case that
 // starts from rest is first solved laminar at a pressure difference low enough for a steady laminar
@@ -15,7 +15,8 @@
 // upstream stagnation pressure (the inlet's total pressure); Re as in E17 (orifice) and E18 (nozzle);
 // flapper force = 2 pi int (p - p_r) r dr over the flapper face; and for C12 the land's force, the
 // axial momentum through the bore's exit and the lowest absolute pressure against the vapour pressure.
-#include "common/valve_description.h"
+#include "common/parameters/pilot_field.h"
+#include "common/thermal_laws.h"
 #include "flow/simplec.h"
 
 #include <memory>
@@ -63,24 +64,44 @@ namespace servodrift::flow
     FlowSolverParameters::Turbulence turbulence = FlowSolverParameters::Turbulence::laminar;
   };
 
-  /// Fluid, resolution and flow model of one case: the valve's at temperature T unless overridden.
+  /// What the pilot cases read of the valve description, not the whole of it: the field level's
+  /// mesh and solution settings, the flow solver's, and the pressures that set a case's outlet
+  /// state and its cavitation.
+  struct PilotFieldSettings
+  {
+    PilotFieldMeshParameters mesh;
+    PilotFieldSolutionParameters solution;
+    FlowSolverParameters solver;
+    double supply_pressure;  ///< p_s, gauge [Pa]
+    double return_pressure;  ///< p_r, gauge [Pa]
+    double ambient_pressure; ///< added to a gauge pressure for the absolute one [Pa]
+    double vapour_pressure;  ///< absolute [Pa]
+  };
+
+  /// The pilot cases' slice of the valve description
+  PilotFieldSettings pilot_field_settings(const ValveDescription &valve);
+
+  /// Fluid, resolution, flow model and dimensions of one case: the valve's at temperature T unless
+  /// overridden.
   struct PilotFieldCase
   {
     double temperature;    ///< [degC]
     FluidProperties fluid; ///< rho, mu at the temperature
     double resolution;     ///< mesh resolution (multiplies every cell count)
     FlowSolverParameters::Turbulence turbulence; ///< the flow model of this case
+    laws::PilotStageGeometry dimensions; ///< the pilot stage's dimensions at the temperature (2.3)
   };
 
   /// The case at temperature T from the valve description: the oil's rho(T), mu(T), the field
-  /// resolution and the valve's flow solver model (the stage chooses per case, pilot_field_sweep).
+  /// resolution, the valve's flow solver model (the stage chooses per case, pilot_field_sweep) and
+  /// the dimensions at T.
   PilotFieldCase pilot_field_case(const ValveDescription &valve, double T);
 
   class PilotField
   {
   public:
     /// The fixed orifice (gap ignored) or the nozzle-flapper case at `gap' > 0 [m].
-    PilotField(const ValveDescription &valve, PilotGeometry geometry, const PilotFieldCase &c, double gap = 0);
+    PilotField(const PilotFieldSettings &settings, PilotGeometry geometry, const PilotFieldCase &c, double gap = 0);
     ~PilotField();
     PilotField(PilotField &&) noexcept;
 
@@ -100,7 +121,7 @@ namespace servodrift::flow
     void set_fields(const FlowFields &fields);
     bool at_rest() const; ///< nothing solved or given yet: the next solve starts up laminar
     /// The largest ratio of successive pressure levels on the path of the next solves (default:
-    /// `Pilot stage/Field continuation ratio'), > 1.
+    /// `Pilot stage/Field solution/Continuation ratio'), > 1.
     void set_continuation_ratio(double ratio);
 
     /// Where a case that fails writes its last fields (VTU); empty: nowhere.

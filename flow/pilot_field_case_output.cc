@@ -34,8 +34,8 @@ namespace servodrift::flow
     /// that measurement, for the table's header: re-run the bench when the mesh or the solver changes.
     std::string nozzle_mesh_error_note(const ValveDescription &valve)
     {
-      const double resolution = valve.pilot.field_resolution;
-      if (valve.pilot.nozzle_flow_model != PilotStageParameters::FlowModel::k_epsilon)
+      const double resolution = valve.pilot.field_mesh.resolution;
+      if (valve.pilot.field_solution.nozzle_flow_model != PilotFieldSolutionParameters::FlowModel::k_epsilon)
         return "mesh resolution " + format_number(resolution) +
                ": the nozzle's discretisation error was measured with the default two-layer k-epsilon "
                "(bench/bench_mesh_convergence); for this flow model see doc/validation.md";
@@ -72,9 +72,8 @@ namespace servodrift::flow
         "deviation (spread) over the averaged time, the standard error of the mean (uncertainty, batch means) and the "
         "averaged steps whose equations the step's iteration cap stopped short of its tolerance, the lag at which "
         "the autocorrelation of C_d or the force first falls to zero (the averaged steps must hold 5 of it) "
-        "(Pilot stage/Field time steps, Field averaged fraction, Field time step Courant number, Field time step "
-        "iterations); flag 5: the table "
-        "uses the mean, 2: its uncertainty is beyond Field time average uncertainty limit, more than a tenth of its "
+        "(Pilot stage/Time average: Steps, Averaged fraction, Courant number, Step iterations); flag 5: the table "
+        "uses the mean, 2: its uncertainty is beyond Pilot stage/Time average/Uncertainty limit, more than a tenth of its "
         "steps were capped or its window does not span 5 lags, and the reduced-order value stands in");
       doc.columns.insert(doc.columns.end(), {"discharge_coefficient[1]",
                      "discharge_coefficient_spread[1]",
@@ -185,7 +184,7 @@ namespace servodrift::flow
       std::cerr << "servodrift: note: " << cavitating_cases << " of " << records.size() << " " << what
                 << " cases cavitate ("
                 << (valve_cavitation ? "the equilibrium cavitation model holds those cells at the vapour pressure"
-                                     : "Pilot stage/Field cavitation is off: the single-phase result stretches the "
+                                     : "Pilot stage/Field solution/Cavitation is off: the single-phase result stretches the "
                                        "liquid below its vapour pressure and is not physical there")
                 << "; model.md C12; flow/*_cases.csv)\n";
   }
@@ -193,7 +192,7 @@ namespace servodrift::flow
   Table fixed_orifice_table(const ValveDescription &valve, const CaseRows &records)
   {
     Table table(schemas::fixed_orifice);
-    table.notes.push_back("mesh resolution " + format_number(valve.pilot.field_resolution) +
+    table.notes.push_back("mesh resolution " + format_number(valve.pilot.field_mesh.resolution) +
                           ": the orifice's discretisation error is measured laminar only (Re_0 493: 0.11 % between "
                           "resolutions 1 and 1.4), not at k-epsilon's Reynolds numbers (doc/validation.md)");
     std::size_t next = 0;

@@ -106,6 +106,7 @@ namespace servodrift::flow
   public:
     Chain(const ValveDescription &valve_, PilotGeometry g, double T)
       : valve(valve_)
+      , settings(pilot_field_settings(valve_))
       , kind(g)
       , conditions(pilot_field_case(valve_, T))
       , closed_forms(valve_, T)
@@ -159,7 +160,7 @@ namespace servodrift::flow
     PilotFieldResult solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
                                       bool started_elsewhere);
     /// The case from rest (laminar start-up) into a new `slot', with half the steps of `Field
-    /// continuation ratio' (in the logarithm) for this solve.
+    /// solution/Continuation ratio' (in the logarithm) for this solve.
     PilotFieldResult solve_from_rest(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
     /// A rung of the retry, for the models less robust than the two-layer k-epsilon (SST,
     /// Launder-Sharma): the case solved with the two-layer k-epsilon (on its own retry path, from the
@@ -173,13 +174,14 @@ namespace servodrift::flow
     PilotFieldResult solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
     /// A case whose steady iteration stalled (`why'): its time average into `record'
     /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too or the uncertainty
-    /// of its mean is beyond `Field time average uncertainty limit' (the average is then recorded,
+    /// of its mean is beyond `Time average/Uncertainty limit' (the average is then recorded,
     /// not used). A used
     /// average's mean fields go to the case's VTU.
     bool time_average_of(PilotField &field, double dp, const std::string &where, const std::string &why,
                          std::vector<double> &record);
 
     const ValveDescription &valve;
+    PilotFieldSettings settings; ///< what the cases read of the valve
     PilotGeometry kind;
     PilotFieldCase conditions;
     PilotClosedForms closed_forms;

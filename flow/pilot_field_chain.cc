@@ -15,7 +15,7 @@
 namespace servodrift::flow
 {
   using namespace case_record;
-  using FlowModel = PilotStageParameters::FlowModel;
+  using FlowModel = PilotFieldSolutionParameters::FlowModel;
 
   namespace
   {
@@ -134,14 +134,14 @@ namespace servodrift::flow
     const auto g = closed_forms.geometry();
     const double length = orifice ? g.fixed_orifice_diameter : 2 * h;
     const double ideal_Re = length * std::sqrt(2 * dp / conditions.fluid.density) / nu;
-    const Turbulence t = orifice ? model_of_case(pilot.fixed_orifice_flow_model, ideal_Re, pilot.fixed_orifice_transition_reynolds) :
-                                   model_of_case(pilot.nozzle_flow_model, ideal_Re, pilot.nozzle_transition_reynolds);
+    const Turbulence t = orifice ? model_of_case(pilot.field_solution.fixed_orifice_flow_model, ideal_Re, pilot.field_solution.fixed_orifice_transition_reynolds) :
+                                   model_of_case(pilot.field_solution.nozzle_flow_model, ideal_Re, pilot.field_solution.nozzle_transition_reynolds);
     auto &slot = cases[t];
     if (!slot)
       {
         PilotFieldCase c = conditions;
         c.turbulence = t;
-        slot = std::make_unique<PilotField>(valve, kind, c, h);
+        slot = std::make_unique<PilotField>(settings, kind, c, h);
       }
     if (start)
       slot->set_fields(*start);
@@ -182,7 +182,7 @@ namespace servodrift::flow
     catch (const std::runtime_error &e) // NotConverged or diverged: flagged, the reduced order stands in
       {
         // a case that stalls may have no steady solution: its time average stands for it
-        if (valve.pilot.field_time_average && dynamic_cast<const NotConverged *>(&e) &&
+        if (valve.pilot.time_average.enabled && dynamic_cast<const NotConverged *>(&e) &&
             time_average_of(*slot, dp, where, e.what(), record))
           {
             record[flag] = flags::time_averaged;
@@ -219,9 +219,9 @@ namespace servodrift::flow
         // (a time average takes minutes), unless `Output/Progress' is none
         // (of the steps planned so far: a mean still uncertain gets more)
         const unsigned int interval = valve.flow_solver.report_interval;
-        const unsigned int tenth = std::max(1u, valve.pilot.field_time_steps / 10);
+        const unsigned int tenth = std::max(1u, valve.pilot.time_average.steps / 10);
         const bool tenths = interval == 0 && valve.output.progress != OutputParameters::Progress::none;
-        a = time_average(field, dp, valve.pilot, [&](unsigned int step, unsigned int planned, double time, const PilotFieldResult &r) {
+        a = time_average(field, dp, valve.pilot.time_average, [&](unsigned int step, unsigned int planned, double time, const PilotFieldResult &r) {
           if (interval > 0 && step % interval == 0)
             std::fprintf(stderr, "  time step %u of %u, t %.4g s: C_d %.6f, flapper force %.6f N, %u iterations%s%s, largest "
                          "residual %s %.3g\n", step, planned, time, r.discharge_coefficient, r.flapper_force, r.iterations,
@@ -234,7 +234,7 @@ namespace servodrift::flow
           std::fprintf(stderr,
                        "servodrift: note: %s: %u of its %u averaged time steps at Courant number %g stopped at the "
                        "step's iteration cap short of its tolerance (held by %s), more than %g %%: marched again at "
-                       "Courant number %g (`Pilot stage/Field time step halvings')\n",
+                       "Courant number %g (`Pilot stage/Time average/Step halvings')\n",
                        where.c_str(), rejected.unconverged_steps, rejected.averaged_steps, rejected.courant_number,
                        capped_steps_held_by(rejected).c_str(), 100 * unconverged_steps_limit, rejected.courant_number / 2);
         });
@@ -261,13 +261,13 @@ namespace servodrift::flow
                   << capped_steps_held_by(a) << "), more than "
                   << format_number(100 * unconverged_steps_limit) << " % at Courant number "
                   << format_number(a.courant_number) << " (after " << a.courant_halvings
-                  << " halvings): the mean is not that of the marched equations (more `Pilot stage/Field time step "
-                     "halvings' or `Field time step iterations'); listed in flow/*_time_averages.csv, not used\n";
+                  << " halvings): the mean is not that of the marched equations (more `Pilot stage/Time average/Step "
+                     "halvings' or `Step iterations'); listed in flow/*_time_averages.csv, not used\n";
         return false;
       }
     if (a.unconverged_steps > 0)
       std::cerr << "servodrift: note: " << where << ": " << a.unconverged_steps << " of its " << a.averaged_steps
-                << " averaged time steps stopped at the step's iteration cap (`Pilot stage/Field time step "
+                << " averaged time steps stopped at the step's iteration cap (`Pilot stage/Time average/Step "
                    "iterations') short of its tolerance (held by "
                 << capped_steps_held_by(a) << ")\n";
     if (!window_spans_motion(a))
@@ -276,23 +276,23 @@ namespace servodrift::flow
                   << " averaged time steps do not span its flow's motion (the autocorrelation of C_d or the force "
                      "falls to zero only after "
                   << a.decorrelation_steps << " steps; " << lags_per_window
-                  << " times that are needed for its uncertainty to hold) within `Pilot stage/Field time steps "
+                  << " times that are needed for its uncertainty to hold) within `Pilot stage/Time average/Steps "
                      "limit': listed in flow/*_time_averages.csv, not used\n";
         return false;
       }
     // the tables want the mean (the valve does not follow a jet or cavity cycling at 0.1-1 MHz):
     // it stands for the case if the run pins it down, whatever the unsteadiness (the spread)
-    const double limit = valve.pilot.field_time_average_uncertainty_limit;
+    const double limit = valve.pilot.time_average.uncertainty_limit;
     const double C_d_error = a.discharge_coefficient_relative_uncertainty;
     const double force_error = a.flapper_force_relative_uncertainty;
     if (!(C_d_error <= limit && force_error <= limit))
       {
         std::cerr << "servodrift: warning: " << where << ": the mean of its time average is uncertain by "
                   << format_number(100 * C_d_error) << " % in C_d and " << format_number(100 * force_error)
-                  << " % in the flapper force (standard errors), beyond `Pilot stage/Field time average uncertainty "
+                  << " % in the flapper force (standard errors), beyond `Pilot stage/Time average/Uncertainty "
                      "limit' ("
                   << format_number(100 * limit) << " %) after " << std::lround(a.averaged_time / a.time_step)
-                  << " averaged steps, what `Pilot stage/Field time steps limit' allows: listed in "
+                  << " averaged steps, what `Pilot stage/Time average/Steps limit' allows: listed in "
                      "flow/*_time_averages.csv, not used\n";
         return false;
       }
@@ -311,7 +311,7 @@ namespace servodrift::flow
     PilotFieldCase c = conditions;
     c.turbulence = s.model;
     auto &slot = cases[s.model];
-    slot = std::make_unique<PilotField>(valve, kind, c, current_gap > 0 ? current_gap : 0);
+    slot = std::make_unique<PilotField>(settings, kind, c, current_gap > 0 ? current_gap : 0);
     slot->set_fields(s.fields);
   }
 } // namespace servodrift::flow

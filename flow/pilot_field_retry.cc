@@ -174,19 +174,19 @@ namespace servodrift::flow
   {
     PilotFieldCase c = conditions;
     c.turbulence = t;
-    slot = std::make_unique<PilotField>(valve, kind, c, h);
+    slot = std::make_unique<PilotField>(settings, kind, c, h);
     slot->set_failure_output(failure_output);
     // the smaller steps for this solve only: the chain's next cases take the valve's
-    slot->set_continuation_ratio(std::sqrt(valve.pilot.field_continuation_ratio));
+    slot->set_continuation_ratio(std::sqrt(settings.solution.continuation_ratio));
     try
       {
         PilotFieldResult r = slot->solve(dp);
-        slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
+        slot->set_continuation_ratio(settings.solution.continuation_ratio);
         return r;
       }
     catch (const std::runtime_error &)
       {
-        slot->set_continuation_ratio(valve.pilot.field_continuation_ratio);
+        slot->set_continuation_ratio(settings.solution.continuation_ratio);
         throw;
       }
   }
@@ -195,14 +195,14 @@ namespace servodrift::flow
   {
     PilotFieldCase c = conditions;
     c.turbulence = Turbulence::k_epsilon;
-    auto k_epsilon = std::make_unique<PilotField>(valve, kind, c, h);
+    auto k_epsilon = std::make_unique<PilotField>(settings, kind, c, h);
     k_epsilon->set_failure_output(failure_output);
     if (last && last_model == t)
       k_epsilon->set_fields(*last);
     const PilotFieldResult start = solve_with_retry(k_epsilon, Turbulence::k_epsilon, h, dp, true);
     c.turbulence = t;
     const auto start_model_t = [&] {
-      slot = std::make_unique<PilotField>(valve, kind, c, h);
+      slot = std::make_unique<PilotField>(settings, kind, c, h);
       slot->set_failure_output(failure_output);
       slot->set_fields(k_epsilon->fields());
     };

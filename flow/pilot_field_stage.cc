@@ -249,8 +249,8 @@ namespace servodrift::flow
     const auto [orifice, nozzle] = run_chains(valve);
     write_case_summary(valve, PilotGeometry::fixed_orifice, orifice, variant);
     write_case_summary(valve, PilotGeometry::nozzle_flapper, nozzle, variant);
-    report_counts("fixed-orifice", orifice, valve.pilot.field_cavitation);
-    report_counts("nozzle-flapper", nozzle, valve.pilot.field_cavitation);
+    report_counts("fixed-orifice", orifice, valve.pilot.field_solution.cavitation);
+    report_counts("nozzle-flapper", nozzle, valve.pilot.field_solution.cavitation);
     return {fixed_orifice_table(valve, orifice), nozzle_flapper_table(valve, nozzle)};
   }
 } // namespace servodrift::flow

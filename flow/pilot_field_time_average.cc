@@ -155,14 +155,14 @@ namespace servodrift::flow
   {
     /// One march at the time step of `courant' from the field's current state: time_average's
     /// plan, its statistics and its gate on capped steps.
-    TimeAverage march(PilotField &field, double dp, const PilotStageParameters &settings, double courant,
+    TimeAverage march(PilotField &field, double dp, const PilotTimeAverageParameters &settings, double courant,
                       const std::function<void(unsigned int, unsigned int, double, const PilotFieldResult &)> &each_step)
     {
       TimeAverage a;
       a.courant_number = courant;
       a.time_step = field.courant_time_step(courant);
-      AveragingPlan plan(settings.field_time_steps, settings.field_averaged_fraction, settings.field_time_steps_limit,
-                         settings.field_time_average_uncertainty_limit);
+      AveragingPlan plan(settings.steps, settings.averaged_fraction, settings.steps_limit,
+                         settings.uncertainty_limit);
       const bool has_flapper = field.geometry() == PilotGeometry::nozzle_flapper;
       RunningMoments Q, C_d, Re, force, land, jet, bore;
       std::vector<double> C_d_series, force_series; // over the averaged steps, for the standard errors
@@ -188,7 +188,7 @@ namespace servodrift::flow
       };
       for (unsigned int step = 0; step < plan.planned(); ++step)
         {
-          const PilotFieldResult r = field.advance(dp, a.time_step, settings.field_time_step_iterations, step_tolerance);
+          const PilotFieldResult r = field.advance(dp, a.time_step, settings.step_iterations, step_tolerance);
           m.iterations += r.iterations;
           if (each_step)
             each_step(step + 1, plan.planned(), (step + 1) * a.time_step, r);
@@ -227,11 +227,11 @@ namespace servodrift::flow
     }
   } // namespace
 
-  TimeAverage time_average(PilotField &field, double dp, const PilotStageParameters &settings,
+  TimeAverage time_average(PilotField &field, double dp, const PilotTimeAverageParameters &settings,
                            const std::function<void(unsigned int, unsigned int, double, const PilotFieldResult &)> &each_step,
                            const std::function<void(const TimeAverage &rejected)> &before_halving)
   {
-    double courant = settings.field_time_step_courant;
+    double courant = settings.courant_number;
     unsigned int iterations = 0, halvings = 0;
     for (;; courant /= 2, ++halvings)
       {
@@ -239,7 +239,7 @@ namespace servodrift::flow
         iterations += a.mean.iterations;
         a.mean.iterations = iterations;
         a.courant_halvings = halvings;
-        if (steps_converged(a) || halvings == settings.field_time_step_halvings)
+        if (steps_converged(a) || halvings == settings.step_halvings)
           return a;
         if (before_halving)
           before_halving(a);

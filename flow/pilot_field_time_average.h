@@ -6,7 +6,7 @@
 // with the time step of a Courant number, and reported by the mean of its results over the last part
 // of the run, with their standard deviations as its spread and the standard errors of the means
 // (batch means) as their uncertainty.
-#include "common/parameters/pilot_stage.h"
+#include "common/parameters/pilot_field.h"
 #include "flow/pilot_field.h"
 
 #include <array>
@@ -31,7 +31,7 @@ namespace servodrift::flow
     double discharge_coefficient_uncertainty = 0; ///< [1]
     double flapper_force_uncertainty = 0;         ///< [N]
     /// The same relative to the means, the force's 0 where the geometry has no flapper: what
-    /// `Field time average uncertainty limit' bounds.
+    /// `Time average/Uncertainty limit' bounds.
     double discharge_coefficient_relative_uncertainty = 0; ///< [1]
     double flapper_force_relative_uncertainty = 0;         ///< [1]
     double courant_number = 0;               ///< of the time step, at the march's start [1]
@@ -47,7 +47,7 @@ namespace servodrift::flow
     /// residual_names: which equation a capped motion does not solve.
     std::array<unsigned int, 5> unconverged_steps_held_by{};
     /// The marches before this one whose steps the cap stopped too often (steps_converged), each
-    /// followed by one at half the Courant number (`Field time step halvings').
+    /// followed by one at half the Courant number (`Time average/Step halvings').
     unsigned int courant_halvings = 0;
     /// The larger decorrelation_lag of the averaged C_d and flapper force series [steps]: batch
     /// means hold if the averaged steps are at least lags_per_window times it (window_spans_motion).
@@ -59,7 +59,7 @@ namespace servodrift::flow
   };
 
   /// Each time step's implicit equations are iterated until their scaled residuals fall below this,
-  /// or for at most `Field time step iterations': a step changes the fields little, so its
+  /// or for at most `Time average/Step iterations': a step changes the fields little, so its
   /// residuals start low (a few iterations per step). With 1e-4 a steady laminar case marched in
   /// time stays within 1.5e-4 of its steady C_dn (pilot_field_time_average_test.cc).
   constexpr double step_tolerance = 1e-4;
@@ -87,7 +87,7 @@ namespace servodrift::flow
   /// The averaged steps must hold this many decorrelation lags for batch means to hold: with 10
   /// batches each is then at least half a lag long and batches two apart a lag apart, and a cycle is
   /// spanned 1.25 times (its quarter period times 5). Averaged over less than that (a smaller
-  /// Courant number with the same `Field time steps'), a window can hold half a cycle, whose batch
+  /// Courant number with the same `Time average/Steps'), a window can hold half a cycle, whose batch
   /// means follow a trend and claim a mean several times better than it is (doc/validation.md).
   constexpr unsigned int lags_per_window = 5;
 
@@ -135,22 +135,22 @@ namespace servodrift::flow
     double limit;
   };
 
-  /// Marches `field' at pressure difference dp from its current fields (`Field time steps' steps at
-  /// `Field time step Courant number'), averaging the last `Field averaged fraction' of them. While
-  /// the relative standard error of the mean C_d or flapper force exceeds `Field time average
-  /// uncertainty limit', the averaged time is lengthened by AveragingPlan, up to `Field time
-  /// steps limit' steps in all (the start's transient is cut once), and while the averaged time
+  /// Marches `field' at pressure difference dp from its current fields (`Time average/Steps' steps at
+  /// `Time average/Courant number'), averaging the last `Time average/Averaged fraction' of them. While
+  /// the relative standard error of the mean C_d or flapper force exceeds `Time average/
+  /// Uncertainty limit', the averaged time is lengthened by AveragingPlan, up to `Time average/
+  /// Steps limit' steps in all (the start's transient is cut once), and while the averaged time
   /// does not span the flow's slowest motion (window_spans_motion); not if more than
   /// unconverged_steps_limit of the steps averaged so far were capped (steps_converged). A march
   /// whose steps the cap stopped too often is marched again from where it ended at half the Courant
-  /// number, up to `Field time step halvings' times: a shorter step changes the fields less, so its
+  /// number, up to `Time average/Step halvings' times: a shorter step changes the fields less, so its
   /// iterations reach the tolerance within the cap more often (a cavity collapsing within a step is
   /// what stops them); the last march is returned, its iterations those of all. Throws
   /// std::runtime_error if a step diverges, std::invalid_argument if nothing flows. `each_step', if
   /// set, sees every step's results and the steps planned so far (a progress report; the steps of a
   /// march again count from 1), `before_halving' each march that is marched again.
   TimeAverage time_average(
-    PilotField &field, double pressure_difference, const PilotStageParameters &settings,
+    PilotField &field, double pressure_difference, const PilotTimeAverageParameters &settings,
     const std::function<void(unsigned int step, unsigned int planned, double time, const PilotFieldResult &)> &each_step = {},
     const std::function<void(const TimeAverage &rejected)> &before_halving = {});
 } // namespace servodrift::flow

@@ -78,9 +78,9 @@ namespace servodrift::flow
     /// closed forms' ratio does not hold, at the field level.
     bool bore_tables_wanted(const ValveDescription &valve)
     {
-      using Choice = PilotStageParameters::BoreSensitivity;
-      if (valve.pilot.bore_sensitivity != Choice::automatic)
-        return valve.pilot.bore_sensitivity == Choice::on;
+      using Choice = BoreSensitivityParameters::Tables;
+      if (valve.pilot.bore_sensitivity.tables != Choice::automatic)
+        return valve.pilot.bore_sensitivity.tables == Choice::on;
       if (valve.pilot.model_level != ModelLevel::field)
         return false;
       const auto &a = valve.asymmetry;
@@ -117,11 +117,11 @@ namespace servodrift::flow
     /// without flow (dp = 0, a closed gap, on every temperature alike) are left out.
     std::pair<Table, Table> bore_tables(const ValveDescription &valve, const PilotTables &nominal)
     {
-      const double step = valve.pilot.bore_sensitivity_step;
+      const double step = valve.pilot.bore_sensitivity.step;
       ValveDescription wider = valve;
       wider.pilot.fixed_orifice_diameter += step;
       wider.pilot.nozzle_diameter += step;
-      wider.pilot.model_form_alternatives.clear();
+      wider.pilot.field_solution.model_form_alternatives.clear();
       wider.output.flow_fields = OutputParameters::FlowFields::none;
       SweepParameters &s = wider.sweeps;
       s.pressure_fractions = nearest(valve.sweeps.pressure_fractions, {0.25, 0.5, 0.75, 1});
@@ -211,15 +211,15 @@ namespace servodrift::flow
       });
     // the model-form alternatives: the same sweep with another flow model, tables beside the
     // default's (the system stage reports their spread)
-    for (const std::string &model : valve.pilot.model_form_alternatives)
+    for (const std::string &model : valve.pilot.field_solution.model_form_alternatives)
       {
         ValveDescription alternative = valve;
-        using FlowModel = PilotStageParameters::FlowModel;
+        using FlowModel = PilotFieldSolutionParameters::FlowModel;
         const FlowModel m = model == "laminar"                  ? FlowModel::automatic :
                             model == "k-epsilon"                ? FlowModel::k_epsilon :
                             model == "k-epsilon-launder-sharma" ? FlowModel::k_epsilon_launder_sharma :
                                                                   FlowModel::k_omega_sst;
-        alternative.pilot.fixed_orifice_flow_model = alternative.pilot.nozzle_flow_model = m;
+        alternative.pilot.field_solution.fixed_orifice_flow_model = alternative.pilot.field_solution.nozzle_flow_model = m;
         alternative.output.flow_fields = OutputParameters::FlowFields::none;
         PilotTables other = compute_pilot_field_tables(alternative, "." + model);
         write_table(valve, other.fixed_orifice, producer + " (" + model + ")", model);

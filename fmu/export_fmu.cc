@@ -160,7 +160,7 @@ namespace servodrift::fmu
                << " pilot_stage=" << to_string(valve.pilot.model_level) << "\n"
                << "mesh-resolutions torque_motor=" << format_cell(valve.torque_motor.field_mesh_resolution)
                << " spring_tube=" << format_cell(valve.spring_tube.field_mesh_resolution)
-               << " pilot_stage=" << format_cell(valve.pilot.field_resolution) << "\n"
+               << " pilot_stage=" << format_cell(valve.pilot.field_mesh.resolution) << "\n"
                << "temperature-range " << format_cell(e.lowest_temperature) << " " << format_cell(e.highest_temperature)
                << " degC\n"
                << levels.str();

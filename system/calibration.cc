@@ -38,7 +38,7 @@ namespace servodrift::system
     FreeParameter free_parameter(const CalibrationRequest &request, const std::string &text)
     {
       const auto equals = text.find('=');
-      const std::string path = text.substr(0, equals);
+      const std::string path = current_entry_path(text.substr(0, equals), "--free \"" + shown_input(text) + "\"");
       const std::string subsection = path.substr(0, path.find('/'));
       if (not_valve_parameters.count(subsection))
         throw InputError("--free \"" + shown_input(text) + "\": `" + subsection +

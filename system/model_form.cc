@@ -47,12 +47,12 @@ namespace servodrift::system
   {
     std::vector<ModelFormCoefficients> models{
       {"default", default_coefficients, not_converged_rows(tables.fixed_orifice) + not_converged_rows(tables.nozzle_flapper)}};
-    for (const std::string &model : valve.pilot.model_form_alternatives)
+    for (const std::string &model : valve.pilot.field_solution.model_form_alternatives)
       {
         if (!std::filesystem::exists(directory + "/nozzle_flapper." + model + ".csv") ||
             !std::filesystem::exists(directory + "/fixed_orifice." + model + ".csv"))
           {
-            warnings.push_back("`Pilot stage/Model-form alternatives' lists " + model + ", but tables/ has no " +
+            warnings.push_back("`Pilot stage/Field solution/Model-form alternatives' lists " + model + ", but tables/ has no " +
                                "nozzle_flapper." + model + ".csv or fixed_orifice." + model +
                                ".csv (run the flow stage): left out of the model-form uncertainty");
             continue;
@@ -150,7 +150,7 @@ namespace servodrift::system
     out << "## Model-form uncertainty of the pilot stage\n\n";
     if (models.size() < 2)
       {
-        out << "Not computed in this run (`Pilot stage/Model-form alternatives`: the flow stage computes the "
+        out << "Not computed in this run (`Pilot stage/Field solution/Model-form alternatives`: the flow stage computes the "
                "tables of other flow models beside the default's).\n\n";
         return;
       }

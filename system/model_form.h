@@ -1,6 +1,6 @@
 #pragma once
 // The model-form uncertainty of the pilot stage (issue 28): the flow stage computes the tables of
-// `Pilot stage/Model-form alternatives' beside the default's (tables/<table>.<model>.csv); here the
+// `Pilot stage/Field solution/Model-form alternatives' beside the default's (tables/<table>.<model>.csv); here the
 // same stage coefficients are read off each of them through the same valve model, and their spread
 // about the default's at every drift temperature is what the choice of flow model leaves open:
 // C_dn and the flapper force at the null, and the flow-force stiffness K_f (E24).

@@ -18,7 +18,7 @@ namespace servodrift::system
     Table spring_tube{schemas::spring_tube};
     Table fixed_orifice{schemas::fixed_orifice};
     Table nozzle_flapper{schemas::nozzle_flapper};
-    /// the pilot flows at wider bores, where the flow stage made them (`Pilot stage/Bore sensitivity')
+    /// the pilot flows at wider bores, where the flow stage made them (`Pilot stage/Bore sensitivity/Tables')
     std::optional<Table> fixed_orifice_bore, nozzle_flapper_bore;
     std::vector<std::string> warnings; ///< e.g. a table made with other parameters
     std::vector<std::string> notes;    ///< what the reader should know that is not wrong (flag 6 rows)

@@ -30,7 +30,7 @@ namespace servodrift::system
     std::optional<ToleranceResults> tolerances;  ///< when asked for (issue 25)
     const CalibrationResults *calibration = nullptr; ///< the fit that made this valve (issue 26)
     /// the default's and each model-form alternative's coefficients (issue 28; only the default's
-    /// when `Pilot stage/Model-form alternatives' is empty)
+    /// when `Pilot stage/Field solution/Model-form alternatives' is empty)
     std::vector<ModelFormCoefficients> model_form;
     /// the four tables on their grids, when `Output/Formats' asks for mat or modelica
     std::vector<GriddedData> table_grids;

@@ -16,7 +16,7 @@ namespace servodrift
                           "Diameter of the " + std::string(left ? "left" : "right") +
                             " fixed orifice (feeding " + p + ") minus the nominal `Pilot stage/Fixed orifice diameter' "
                             "(E31). The tables hold the nominal bore: the side's flow is the table's times the "
-                            "ratio of the bore tables (`Pilot stage/Bore sensitivity') or of E21 "
+                            "ratio of the bore tables (`Pilot stage/Bore sensitivity/Tables') or of E21 "
                             "(doc/method.md, \"A bore off the tables' geometry\"). [m]");
         prm.declare_entry(side + " nozzle diameter deviation", "0", Patterns::Double(-1e-4, 1e-4),
                           "Diameter of the " + std::string(left ? "left" : "right") +

@@ -1,6 +1,5 @@
-#include "common/parameters/pilot_stage.h"
-
 #include "common/parameters/parameter_source.h"
+#include "common/parameters/pilot_stage.h"
 
 namespace servodrift
 {
@@ -17,24 +16,50 @@ namespace servodrift
     null_gap = prm.get_double("Null gap");
     nozzle_seat_span = prm.get_double("Nozzle seat span");
     nozzle_length = prm.get_double("Nozzle length");
-    nozzle_discharge_coefficient = prm.get_double("Nozzle discharge coefficient");
     control_cavity_volume = prm.get_double("Control cavity volume");
-    field_resolution = prm.get_double("Field mesh resolution");
-    field_grid_sequencing = prm.get_bool("Field grid sequencing");
-    field_continuation_ratio = prm.get_double("Field continuation ratio");
-    field_turbulent_viscosity_limit = prm.get_double("Field turbulent viscosity limit");
-    field_plenum_size = prm.get_double("Field plenum size");
-    field_chamber_length = prm.get_double("Field chamber length");
-    field_outlet_radius = prm.get_double("Field outlet radius");
-    field_cavitation = prm.get_bool("Field cavitation");
-    field_time_average = prm.get_bool("Field time average");
-    field_time_step_courant = prm.get_double("Field time step Courant number");
-    field_time_step_iterations = static_cast<unsigned int>(prm.get_integer("Field time step iterations"));
-    field_time_step_halvings = static_cast<unsigned int>(prm.get_integer("Field time step halvings"));
-    field_time_steps = static_cast<unsigned int>(prm.get_integer("Field time steps"));
-    field_time_steps_limit = static_cast<unsigned int>(prm.get_integer("Field time steps limit"));
-    field_averaged_fraction = prm.get_double("Field averaged fraction");
-    field_time_average_uncertainty_limit = prm.get_double("Field time average uncertainty limit");
+    reduced_order.parse_parameters(prm);
+    field_mesh.parse_parameters(prm);
+    field_solution.parse_parameters(prm);
+    time_average.parse_parameters(prm);
+    bore_sensitivity.parse_parameters(prm);
+    prm.leave_subsection();
+  }
+
+  void PilotReducedOrderParameters::parse_parameters(ParameterSource &prm)
+  {
+    prm.enter_subsection(subsection);
+    fixed_orifice_law =
+      prm.get("Fixed orifice law") == "paper-fit" ? OrificeLaw::paper_fit : OrificeLaw::lichtarowicz;
+    nozzle_law = prm.get("Nozzle law") == "paper-fit" ? NozzleLaw::paper_fit : NozzleLaw::curtain;
+    nozzle_discharge_coefficient = prm.get_double("Nozzle discharge coefficient");
+    flapper_force_law = prm.get("Flapper force law") == "paper-table" ? FlapperForceLaw::paper_table :
+                                                                        FlapperForceLaw::momentum;
+    prm.leave_subsection();
+  }
+
+  void BoreSensitivityParameters::parse_parameters(ParameterSource &prm)
+  {
+    prm.enter_subsection(subsection);
+    const std::string choice = prm.get("Tables");
+    tables = choice == "on" ? Tables::on : choice == "off" ? Tables::off : Tables::automatic;
+    step = prm.get_double("Step");
+    prm.leave_subsection();
+  }
+
+  void PilotFieldMeshParameters::parse_parameters(ParameterSource &prm)
+  {
+    prm.enter_subsection(subsection);
+    resolution = prm.get_double("Resolution");
+    grid_sequencing = prm.get_bool("Grid sequencing");
+    plenum_size = prm.get_double("Plenum size");
+    chamber_length = prm.get_double("Chamber length");
+    outlet_radius = prm.get_double("Outlet radius");
+    prm.leave_subsection();
+  }
+
+  void PilotFieldSolutionParameters::parse_parameters(ParameterSource &prm)
+  {
+    prm.enter_subsection(subsection);
     auto model_of = [&](const char *entry) {
       const std::string m = prm.get(entry);
       return m == "laminar"                  ? FlowModel::laminar :
@@ -47,18 +72,27 @@ namespace servodrift
     fixed_orifice_transition_reynolds = prm.get_double("Fixed orifice transition Reynolds number");
     nozzle_flow_model = model_of("Nozzle flow model");
     nozzle_transition_reynolds = prm.get_double("Nozzle transition Reynolds number");
+    cavitation = prm.get_bool("Cavitation");
+    continuation_ratio = prm.get_double("Continuation ratio");
+    turbulent_viscosity_limit = prm.get_double("Turbulent viscosity limit");
     nozzle_stall_window = static_cast<unsigned int>(prm.get_integer("Nozzle stall window"));
     model_form_alternatives.clear();
     for (const std::string &name : split_list(prm.get("Model-form alternatives")))
       model_form_alternatives.push_back(name);
-    const std::string bore = prm.get("Bore sensitivity");
-    bore_sensitivity = bore == "on" ? BoreSensitivity::on : bore == "off" ? BoreSensitivity::off : BoreSensitivity::automatic;
-    bore_sensitivity_step = prm.get_double("Bore sensitivity step");
-    fixed_orifice_law =
-      prm.get("Fixed orifice law") == "paper-fit" ? OrificeLaw::paper_fit : OrificeLaw::lichtarowicz;
-    nozzle_law = prm.get("Nozzle law") == "paper-fit" ? NozzleLaw::paper_fit : NozzleLaw::curtain;
-    flapper_force_law = prm.get("Flapper force law") == "paper-table" ? FlapperForceLaw::paper_table :
-                                                                        FlapperForceLaw::momentum;
+    prm.leave_subsection();
+  }
+
+  void PilotTimeAverageParameters::parse_parameters(ParameterSource &prm)
+  {
+    prm.enter_subsection(subsection);
+    enabled = prm.get_bool("Enabled");
+    courant_number = prm.get_double("Courant number");
+    step_iterations = static_cast<unsigned int>(prm.get_integer("Step iterations"));
+    step_halvings = static_cast<unsigned int>(prm.get_integer("Step halvings"));
+    steps = static_cast<unsigned int>(prm.get_integer("Steps"));
+    steps_limit = static_cast<unsigned int>(prm.get_integer("Steps limit"));
+    averaged_fraction = prm.get_double("Averaged fraction");
+    uncertainty_limit = prm.get_double("Uncertainty limit");
     prm.leave_subsection();
   }
 } // namespace servodrift

@@ -13,12 +13,12 @@ namespace servodrift
 {
   using namespace validation;
 
-  void PilotStageParameters::validate_time_average() const
+  void PilotTimeAverageParameters::validate() const
   {
-    if (!(field_time_steps_limit >= field_time_steps))
-      refuse("Pilot stage/Field time steps limit", "= " + std::to_string(field_time_steps_limit) +
-                                                     " must be at least `Pilot stage/Field time steps' = " +
-                                                     std::to_string(field_time_steps));
+    if (!(steps_limit >= steps))
+      refuse("Pilot stage/Time average/Steps limit", "= " + std::to_string(steps_limit) +
+                                                       " must be at least `Pilot stage/Time average/Steps' = " +
+                                                       std::to_string(steps));
   }
 
   void PilotStageParameters::validate() const
@@ -36,8 +36,8 @@ namespace servodrift
       refuse("Pilot stage/Land diameter", "= " + format_number(land_diameter) +
                                             " m must be above the nozzle diameter " +
                                             format_number(nozzle_diameter) + " m (E22)");
-    if (!(nozzle_discharge_coefficient > 0))
-      refuse("Pilot stage/Nozzle discharge coefficient", "must be > 0");
+    if (!(reduced_order.nozzle_discharge_coefficient > 0))
+      refuse("Pilot stage/Reduced order/Nozzle discharge coefficient", "must be > 0");
   }
 
   void PilotStageParameters::validate(const ValveDescription &v) const

@@ -34,7 +34,7 @@ case "$which" in
            system/sine_response.csv system/dynamics_summary.csv) ;;
   flow-field)
     command=flow
-    sets=(--set "Pilot stage/Model level=field" --set "Pilot stage/Field mesh resolution=0.6"
+    sets=(--set "Pilot stage/Model level=field" --set "Pilot stage/Field mesh/Resolution=0.6"
           --set "Output/Flow fields=none" --set "Output/Progress=none"
           --set "Sweeps/Table temperatures=40, 60" --set "Sweeps/Drift temperatures=40, 60"
           --set "Sweeps/Field orifice pressure fractions=0.05, 0.25" --set "Sweeps/Field gap fractions=1"

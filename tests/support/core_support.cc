@@ -1,9 +1,14 @@
 #include "tests/support/core_support.h"
 
+#include "common/error.h"
+
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <vector>
 
@@ -25,6 +30,29 @@ namespace servodrift::test
       throw std::runtime_error("mkdtemp failed");
     created_directories().push_back(pattern);
     return pattern;
+  }
+
+  std::string write_file(const std::string &name, const std::string &text)
+  {
+    const std::string path = temporary_directory() + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+  }
+
+  std::string input_refusal(const std::function<void()> &f)
+  {
+    try
+      {
+        f();
+      }
+    catch (const InputError &e)
+      {
+        const std::string m = e.what();
+        EXPECT_EQ(m.find('\n'), std::string::npos) << "not one line: " << m;
+        return m;
+      }
+    ADD_FAILURE() << "no InputError";
+    return "";
   }
 
   void remove_temporary_directories()

@@ -3,6 +3,7 @@
 // RV-1 read from examples/rv1.prm without deal.II, relative differences.
 #include "common/valve_description.h"
 
+#include <functional>
 #include <string>
 
 // A test that takes 20 s or more on the 2-core machine: as TEST and TEST_P, and ctest labels it (and
@@ -18,6 +19,11 @@ namespace servodrift::test
   /// Removes every directory temporary_directory() made in this process (the test main calls it
   /// when all tests passed; a failure keeps them for inspection).
   void remove_temporary_directories();
+  /// `text' written to the file `name' in a fresh temporary directory; its path
+  std::string write_file(const std::string &name, const std::string &text);
+  /// The message of the InputError that `f' throws, checked to be one line; "" and a test failure
+  /// if it throws none.
+  std::string input_refusal(const std::function<void()> &f);
   /// RV-1 as examples/rv1.prm prints it (`servodrift params', kept in sync by cli.files_in_sync),
   /// read by the lean reader: the defaults without deal.II.
   ValveDescription rv1();

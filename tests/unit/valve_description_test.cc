@@ -13,34 +13,8 @@
 #include <fstream>
 
 using namespace servodrift;
-
-namespace
-{
-  std::string write(const std::string &name, const std::string &text)
-  {
-    const std::string path = test::temporary_directory() + "/" + name;
-    std::ofstream(path) << text;
-    return path;
-  }
-
-  /// The message of the InputError thrown by f (fails the test if none is thrown).
-  template <typename F>
-  std::string refusal(F &&f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const InputError &e)
-      {
-        const std::string m = e.what();
-        EXPECT_EQ(m.find('\n'), std::string::npos) << "not one line: " << m;
-        return m;
-      }
-    ADD_FAILURE() << "no InputError";
-    return "";
-  }
-} // namespace
+using test::input_refusal;
+using test::write_file;
 
 TEST(ValveDescription, DefaultsAreRV1)
 {
@@ -68,7 +42,7 @@ TEST(ValveDescription, DefaultsAreRV1)
 
 TEST(ValveDescription, FileThenOverridesInOrder)
 {
-  const std::string prm = write("a.prm", "subsection Pilot stage\n  set Null gap = 30e-6\nend\n");
+  const std::string prm = write_file("a.prm", "subsection Pilot stage\n  set Null gap = 30e-6\nend\n");
   const auto v = load_valve_description(prm, {"Pilot stage/Null gap=35e-6", "Spool/Overlap = 10e-6"});
   EXPECT_DOUBLE_EQ(v.pilot.null_gap, 35e-6);
   EXPECT_DOUBLE_EQ(v.spool.overlap, 10e-6);
@@ -77,11 +51,11 @@ TEST(ValveDescription, FileThenOverridesInOrder)
 
 TEST(ValveDescription, JsonEqualsPrm)
 {
-  const std::string prm = write("a.prm", "subsection Pilot stage\n  set Null gap = 30e-6\nend\n");
-  const std::string json = write("a.json", R"({ "Pilot stage": { "Null gap": "30e-6" } })");
+  const std::string prm = write_file("a.prm", "subsection Pilot stage\n  set Null gap = 30e-6\nend\n");
+  const std::string json = write_file("a.json", R"({ "Pilot stage": { "Null gap": "30e-6" } })");
   EXPECT_EQ(load_valve_description(prm).parameters_sha256, load_valve_description(json).parameters_sha256);
   // the JSON that `servodrift params --format json' prints reads back to the same valve
-  const std::string printed = write("p.json", print_parameters("", {"Spool/Overlap=12e-6"}, ParameterFormat::json));
+  const std::string printed = write_file("p.json", print_parameters("", {"Spool/Overlap=12e-6"}, ParameterFormat::json));
   EXPECT_EQ(load_valve_description(printed).parameters_sha256,
             load_valve_description("", {"Spool/Overlap=12e-6"}).parameters_sha256);
 }
@@ -97,64 +71,64 @@ TEST(ValveDescription, HashIgnoresOutputButNotPhysics)
 
 TEST(ValveDescription, RefusesMalformedFile)
 {
-  const std::string m = refusal([] { load_valve_description(write("m.prm", "subsection Pilot stage\n  set Null gap 3\nend\n")); });
+  const std::string m = input_refusal([] { load_valve_description(write_file("m.prm", "subsection Pilot stage\n  set Null gap 3\nend\n")); });
   EXPECT_NE(m.find("m.prm:2"), std::string::npos) << m;
   const std::string unbalanced =
-    refusal([] { load_valve_description(write("u.prm", "subsection Pilot stage\n  set Null gap = 3e-5\n")); });
+    input_refusal([] { load_valve_description(write_file("u.prm", "subsection Pilot stage\n  set Null gap = 3e-5\n")); });
   EXPECT_NE(unbalanced.find("u.prm"), std::string::npos) << unbalanced;
-  const std::string json = refusal([] { load_valve_description(write("j.json", "{ \"Pilot stage\": {")); });
+  const std::string json = input_refusal([] { load_valve_description(write_file("j.json", "{ \"Pilot stage\": {")); });
   EXPECT_NE(json.find("not valid JSON"), std::string::npos) << json;
-  const std::string missing = refusal([] { load_valve_description("/nonexistent/valve.prm"); });
+  const std::string missing = input_refusal([] { load_valve_description("/nonexistent/valve.prm"); });
   EXPECT_NE(missing.find("/nonexistent/valve.prm"), std::string::npos) << missing;
-  const std::string format = refusal([] { load_valve_description(write("v.txt", "x")); });
+  const std::string format = input_refusal([] { load_valve_description(write_file("v.txt", "x")); });
   EXPECT_NE(format.find("use a .prm or a .json file"), std::string::npos) << format;
 }
 
 TEST(ValveDescription, RefusesUnknownKey)
 {
   const std::string in_file =
-    refusal([] { load_valve_description(write("k.prm", "subsection Pilot stage\n  set Nul gap = 3e-5\nend\n")); });
+    input_refusal([] { load_valve_description(write_file("k.prm", "subsection Pilot stage\n  set Nul gap = 3e-5\nend\n")); });
   EXPECT_NE(in_file.find("k.prm:2"), std::string::npos) << in_file;
   EXPECT_NE(in_file.find("Nul gap"), std::string::npos) << in_file;
   EXPECT_NE(in_file.find("Pilot stage"), std::string::npos) << in_file;
-  const std::string in_override = refusal([] { load_valve_description("", {"Pilot stage/Nul gap=3e-5"}); });
+  const std::string in_override = input_refusal([] { load_valve_description("", {"Pilot stage/Nul gap=3e-5"}); });
   EXPECT_NE(in_override.find("no entry `Nul gap' in subsection `Pilot stage'"), std::string::npos) << in_override;
-  const std::string section = refusal([] { load_valve_description("", {"Pilot/Null gap=3e-5"}); });
+  const std::string section = input_refusal([] { load_valve_description("", {"Pilot/Null gap=3e-5"}); });
   EXPECT_NE(section.find("no subsection `Pilot'"), std::string::npos) << section;
 }
 
 TEST(ValveDescription, RefusesValuesOutOfRange)
 {
   // negative gap: the entry's own range, named with the allowed range
-  const std::string negative = refusal([] { load_valve_description("", {"Pilot stage/Null gap=-1e-6"}); });
+  const std::string negative = input_refusal([] { load_valve_description("", {"Pilot stage/Null gap=-1e-6"}); });
   EXPECT_NE(negative.find("Null gap"), std::string::npos) << negative;
   EXPECT_NE(negative.find("allowed: [Double 0...0.1"), std::string::npos) << negative;
   const std::string in_file =
-    refusal([] { load_valve_description(write("n.prm", "subsection Pilot stage\n  set Null gap = -1e-6\nend\n")); });
+    input_refusal([] { load_valve_description(write_file("n.prm", "subsection Pilot stage\n  set Null gap = -1e-6\nend\n")); });
   EXPECT_NE(in_file.find("n.prm:2: `Pilot stage/Null gap' = -1e-6 is not allowed"), std::string::npos) << in_file;
   // x0 larger than the nozzle radius (and than D_N/4)
-  const std::string gap = refusal([] { load_valve_description("", {"Pilot stage/Null gap=0.25e-3"}); });
+  const std::string gap = input_refusal([] { load_valve_description("", {"Pilot stage/Null gap=0.25e-3"}); });
   EXPECT_NE(gap.find("`Pilot stage/Null gap'"), std::string::npos) << gap;
   EXPECT_NE(gap.find("D_N/4"), std::string::npos) << gap;
   // temperature outside the oil law's range
-  const std::string hot = refusal([] { load_valve_description("", {"Sweeps/Drift temperatures=40, 160"}); });
+  const std::string hot = input_refusal([] { load_valve_description("", {"Sweeps/Drift temperatures=40, 160"}); });
   EXPECT_NE(hot.find("`Sweeps/Drift temperatures' contains 160 degC"), std::string::npos) << hot;
-  const std::string cold = refusal([] { load_valve_description("", {"Sweeps/Table temperatures=-60, 40, 120"}); });
+  const std::string cold = input_refusal([] { load_valve_description("", {"Sweeps/Table temperatures=-60, 40, 120"}); });
   EXPECT_NE(cold.find("-60 degC"), std::string::npos) << cold;
   // relations between entries
-  EXPECT_NE(refusal([] { load_valve_description("", {"Spring tube/Inner diameter=3.6e-3"}); }).find("Inner diameter"),
+  EXPECT_NE(input_refusal([] { load_valve_description("", {"Spring tube/Inner diameter=3.6e-3"}); }).find("Inner diameter"),
             std::string::npos);
-  EXPECT_NE(refusal([] { load_valve_description("", {"Operating conditions/Return pressure=22e6"}); }).find("Return pressure"),
+  EXPECT_NE(input_refusal([] { load_valve_description("", {"Operating conditions/Return pressure=22e6"}); }).find("Return pressure"),
             std::string::npos);
-  EXPECT_NE(refusal([] { load_valve_description("", {"Pilot stage/Land diameter=0.3e-3"}); }).find("Land diameter"),
+  EXPECT_NE(input_refusal([] { load_valve_description("", {"Pilot stage/Land diameter=0.3e-3"}); }).find("Land diameter"),
             std::string::npos);
-  EXPECT_NE(refusal([] { load_valve_description("", {"Sweeps/Motor angles=-1.2, 0, 1.2"}); }).find("Motor angles"),
+  EXPECT_NE(input_refusal([] { load_valve_description("", {"Sweeps/Motor angles=-1.2, 0, 1.2"}); }).find("Motor angles"),
             std::string::npos);
-  EXPECT_NE(refusal([] { load_valve_description("", {"Sweeps/Table temperatures=40, 30, 120"}); }).find("strictly increasing"),
+  EXPECT_NE(input_refusal([] { load_valve_description("", {"Sweeps/Table temperatures=40, 30, 120"}); }).find("strictly increasing"),
             std::string::npos);
-  EXPECT_NE(refusal([] { load_valve_description("", {"Torque motor/Armature height=10.3e-3"}); }).find("gap"),
+  EXPECT_NE(input_refusal([] { load_valve_description("", {"Torque motor/Armature height=10.3e-3"}); }).find("gap"),
             std::string::npos);
-  EXPECT_NE(refusal([] {
+  EXPECT_NE(input_refusal([] {
               load_valve_description("", {"Offsets/Deviation target=hydraulic-null"});
             }).find("zero drift by construction"),
             std::string::npos);
@@ -164,7 +138,7 @@ TEST(ValveDescription, PrintedParameterFileReadsBack)
 {
   const std::string text = print_parameters("", {}, ParameterFormat::prm);
   EXPECT_NE(text.find("subsection Operating conditions"), std::string::npos);
-  const std::string path = write("rv1.prm", text);
+  const std::string path = write_file("rv1.prm", text);
   EXPECT_EQ(load_valve_description(path).parameters_sha256, load_valve_description().parameters_sha256);
   // every entry documents its unit as the last thing of its doc string
   const std::string md = print_parameters("", {}, ParameterFormat::markdown);
@@ -199,7 +173,7 @@ TEST(ValveDescription, PrintedFileReadWithoutDealii)
                                         "Pilot stage/Model level=field", "Output/Plots=false",
                                         "Tolerances/Left orifice diameter/Standard deviation=2e-6"};
   const ValveDescription expected = load_valve_description("", set);
-  const std::string path = write("printed.prm", print_parameters("", set, ParameterFormat::prm));
+  const std::string path = write_file("printed.prm", print_parameters("", set, ParameterFormat::prm));
   const ValveDescription read = read_printed_valve_description(path);
   EXPECT_EQ(read.operating.supply_pressure, expected.operating.supply_pressure);
   EXPECT_EQ(read.spool.overlap, expected.spool.overlap);
@@ -225,19 +199,19 @@ TEST(ValveDescription, LeanReaderRefusesBrokenFiles)
   std::string no_entry = text;
   const auto at = no_entry.find("set Overlap");
   no_entry.erase(at, no_entry.find('\n', at) - at);
-  EXPECT_NE(refusal([&] { read_printed_valve_description(write("gone.prm", no_entry)); }).find("Spool/Overlap' is missing"),
+  EXPECT_NE(input_refusal([&] { read_printed_valve_description(write_file("gone.prm", no_entry)); }).find("Spool/Overlap' is missing"),
             std::string::npos);
   std::string spoiled = text;
   const auto value = spoiled.find("= ", spoiled.find("set Overlap")) + 2;
   spoiled.insert(value, "x");
-  const std::string m = refusal([&] { read_printed_valve_description(write("bad.prm", spoiled)); });
+  const std::string m = input_refusal([&] { read_printed_valve_description(write_file("bad.prm", spoiled)); });
   EXPECT_NE(m.find("bad.prm: entry `Spool/Overlap'"), std::string::npos) << m;
   EXPECT_NE(m.find("not a finite number"), std::string::npos) << m;
-  EXPECT_NE(refusal([&] { read_printed_valve_description(write("open.prm", "subsection Spool\n")); }).find("no `end'"),
+  EXPECT_NE(input_refusal([&] { read_printed_valve_description(write_file("open.prm", "subsection Spool\n")); }).find("no `end'"),
             std::string::npos);
-  EXPECT_NE(refusal([&] { read_printed_valve_description(write("stray.prm", "hello\n")); }).find("stray.prm:1:"),
+  EXPECT_NE(input_refusal([&] { read_printed_valve_description(write_file("stray.prm", "hello\n")); }).find("stray.prm:1:"),
             std::string::npos);
-  EXPECT_NE(refusal([&] { read_printed_valve_description("/nonexistent/parameters.prm"); }).find("cannot be read"),
+  EXPECT_NE(input_refusal([&] { read_printed_valve_description("/nonexistent/parameters.prm"); }).find("cannot be read"),
             std::string::npos);
 }
 
@@ -270,7 +244,7 @@ TEST(ValveDescription, NullShiftSpecIsABandOverTemperature)
 TEST(ValveDescription, RefusesANullShiftSpecTableThatIsBrokenOrShort)
 {
   const auto refused = [](const std::string &table) {
-    return refusal([&] {
+    return input_refusal([&] {
       load_valve_description("", {"Tolerances/Null-shift spec form=table", "Tolerances/Null-shift spec table=" + table});
     });
   };

@@ -256,13 +256,13 @@ namespace
 // What a tolerance study ranks is the null shift per micrometre of one bore: a derivative of the
 // flows. By central differences over +-1 um, the closed forms' ratio against the left side's
 // tables recomputed at each bore, at 80 and 120 degC (the valve nulled at 40): within 1 %. And the
-// same through the bore tables of `Pilot stage/Bore sensitivity' (what the field level uses: a few
+// same through the bore tables of `Pilot stage/Bore sensitivity/Tables' (what the field level uses: a few
 // points per temperature, the ratio carried log-linearly from their 4 um step): within 2 % (the
 // null shift is not linear in the bore over the step: 1.4 % at the reduced-order level).
 TEST(AsymmetricValve, BoreSensitivityOfTheNullShiftAgreesWithTablesAtThatBore)
 {
   const ValveModel &m = rv1().model;
-  const Valve with_bore_tables({"Sweeps/Drift temperatures=40, 80, 120", "Pilot stage/Bore sensitivity=on"});
+  const Valve with_bore_tables({"Sweeps/Drift temperatures=40, 80, 120", "Pilot stage/Bore sensitivity/Tables=on"});
   ASSERT_TRUE(with_bore_tables.model.functions().orifice_bore && with_bore_tables.model.functions().nozzle_bore);
   EXPECT_FALSE(m.functions().orifice_bore || m.functions().nozzle_bore); // auto: none at the reduced-order level
   const double delta = 1e-6;

@@ -49,9 +49,9 @@ namespace servodrift::flow
     const double T = 40, dp = 20.6e6;
     const std::vector<std::string> quiet{"Output/Progress=none", "Output/Flow fields=none"};
     std::vector<std::string> sst = quiet;
-    sst.push_back("Pilot stage/Fixed orifice flow model=k-omega-sst");
+    sst.push_back("Pilot stage/Field solution/Fixed orifice flow model=k-omega-sst");
     std::vector<std::string> k_epsilon = quiet;
-    k_epsilon.push_back("Pilot stage/Fixed orifice flow model=k-epsilon");
+    k_epsilon.push_back("Pilot stage/Field solution/Fixed orifice flow model=k-epsilon");
     const ValveDescription v_sst = test::valve(sst), v_k_epsilon = test::valve(k_epsilon);
 
     const std::vector<double> reference = Chain(v_k_epsilon, PilotGeometry::fixed_orifice, T).solve(0, dp);
@@ -97,8 +97,8 @@ namespace servodrift::flow
     using namespace case_record;
     const std::vector<std::string> quiet{"Output/Progress=none", "Output/Flow fields=none"};
     std::vector<std::string> launder_sharma = quiet, k_epsilon = quiet;
-    launder_sharma.push_back("Pilot stage/Nozzle flow model=k-epsilon-launder-sharma");
-    k_epsilon.push_back("Pilot stage/Nozzle flow model=k-epsilon");
+    launder_sharma.push_back("Pilot stage/Field solution/Nozzle flow model=k-epsilon-launder-sharma");
+    k_epsilon.push_back("Pilot stage/Field solution/Nozzle flow model=k-epsilon");
     const double dp = 10.3e6;
     for (const auto &[T, h] : {std::pair{110.0, 50e-6}, std::pair{90.0, 70e-6}, std::pair{100.0, 60e-6}})
       {
@@ -132,7 +132,7 @@ namespace servodrift::flow
     using namespace case_record;
     const double T = 120, h = 10e-6, dp = 3.09e6;
     const ValveDescription valve = test::valve({"Output/Progress=none", "Output/Flow fields=none"});
-    ASSERT_TRUE(valve.pilot.field_cavitation);
+    ASSERT_TRUE(valve.pilot.field_solution.cavitation);
     const std::vector<double> rest = Chain(valve, PilotGeometry::nozzle_flapper, T).solve(h, dp);
     Chain chain(valve, PilotGeometry::nozzle_flapper, T);
     const std::vector<double> wider = chain.solve(20e-6, dp);
@@ -169,18 +169,18 @@ namespace servodrift::flow
   {
     const double T = 120, h = 20e-6, dp = 3.09e6;
     const ValveDescription valve = test::valve({"Output/Progress=none", "Output/Flow fields=none"});
-    PilotField solved(valve, PilotGeometry::nozzle_flapper, pilot_field_case(valve, T), h);
+    PilotField solved(pilot_field_settings(valve), PilotGeometry::nozzle_flapper, pilot_field_case(valve, T), h);
     const PilotFieldResult steady = solved.solve(dp);
     ASSERT_TRUE(steady.cavitating);
-    PilotField given(valve, PilotGeometry::nozzle_flapper, pilot_field_case(valve, T), h);
+    PilotField given(pilot_field_settings(valve), PilotGeometry::nozzle_flapper, pilot_field_case(valve, T), h);
     given.set_fields(solved.fields());
-    const double dt = solved.courant_time_step(valve.pilot.field_time_step_courant);
-    const double dt_given = given.courant_time_step(valve.pilot.field_time_step_courant);
+    const double dt = solved.courant_time_step(valve.pilot.time_average.courant_number);
+    const double dt_given = given.courant_time_step(valve.pilot.time_average.courant_number);
     PilotFieldResult a, b;
     for (int step = 0; step < 5; ++step)
       {
-        a = solved.advance(dp, dt, valve.pilot.field_time_step_iterations, step_tolerance);
-        b = given.advance(dp, dt, valve.pilot.field_time_step_iterations, step_tolerance);
+        a = solved.advance(dp, dt, valve.pilot.time_average.step_iterations, step_tolerance);
+        b = given.advance(dp, dt, valve.pilot.time_average.step_iterations, step_tolerance);
       }
     const FlowFields f = given.fields();
     const auto cavitating_cells = std::count(f.cavitating.begin(), f.cavitating.end(), 1);
@@ -211,7 +211,7 @@ namespace servodrift::flow
     using namespace case_record;
     const double dp_laminar = 1.03e6, dp = 5.15e6;
     const ValveDescription valve =
-      test::valve({"Output/Progress=none", "Output/Flow fields=none", "Pilot stage/Field mesh resolution=0.5"});
+      test::valve({"Output/Progress=none", "Output/Flow fields=none", "Pilot stage/Field mesh/Resolution=0.5"});
     Chain hotter(valve, PilotGeometry::fixed_orifice, 60);
     ASSERT_EQ(hotter.solve(0, dp_laminar)[flag], flags::computed);
     ASSERT_EQ(hotter.state()->model, FlowSolverParameters::Turbulence::k_epsilon);

@@ -32,21 +32,21 @@ namespace servodrift::flow
     // the chamber the cycle was traced on (the default is 30 since; there the reference run, 0.5 from
     // the start and no cycle window, did not converge in 2 000 iterations, while the default path
     // converges to the same C_d, 0.61551, in 839 iterations: measured)
-    v.pilot.field_chamber_length = 20;
+    v.pilot.field_mesh.chamber_length = 20;
     PilotFieldCase c = pilot_field_case(v, 60);
     c.turbulence = FlowSolverParameters::Turbulence::k_epsilon;
-    PilotField start(v, PilotGeometry::fixed_orifice, c);
+    PilotField start(pilot_field_settings(v), PilotGeometry::fixed_orifice, c);
     const PilotFieldResult at_15 = start.solve(15.45e6);
     ASSERT_TRUE(at_15.cavitating);
 
-    PilotField caught(v, PilotGeometry::fixed_orifice, c);
+    PilotField caught(pilot_field_settings(v), PilotGeometry::fixed_orifice, c);
     caught.initialize_from(start);
     const PilotFieldResult r = caught.solve(20.6e6);
 
     ValveDescription steady = v;
     steady.flow_solver.pressure_relaxation = 0.5;
     steady.flow_solver.cycle_window = 0;
-    PilotField lower(steady, PilotGeometry::fixed_orifice, c);
+    PilotField lower(pilot_field_settings(steady), PilotGeometry::fixed_orifice, c);
     lower.initialize_from(start);
     const PilotFieldResult reference = lower.solve(20.6e6);
 
@@ -59,7 +59,7 @@ namespace servodrift::flow
     EXPECT_NEAR(r.discharge_coefficient / reference.discharge_coefficient, 1, 1e-4);
   }
 
-  // Grid sequencing (`Pilot stage/Field grid sequencing'): a case from rest at resolution 1.5 starts
+  // Grid sequencing (`Pilot stage/Field mesh/Grid sequencing'): a case from rest at resolution 1.5 starts
   // from its solution at 0.75, carried over, instead of the laminar start-up ladder on its own
   // mesh. Both end converged on the same mesh, so C_dn and force agree to what separates two
   // converged states of the cavitating case: the force settles to 1e-4 over 50 iterations, and
@@ -70,7 +70,7 @@ namespace servodrift::flow
     ValveDescription v = test::valve();
     v.flow_solver.turbulence = FlowSolverParameters::Turbulence::k_epsilon;
     const PilotFieldResult sequenced = nozzle_at_null(v, 40e-6, 1.5);
-    v.pilot.field_grid_sequencing = false;
+    v.pilot.field_mesh.grid_sequencing = false;
     const PilotFieldResult ladder = nozzle_at_null(v, 40e-6, 1.5);
     std::printf("resolution 1.5, k-epsilon: sequenced C_dn %.5f F %.5f N (%u + %u coarse iterations), "
                 "start-up ladder C_dn %.5f F %.5f N (%u iterations)\n",
@@ -110,7 +110,7 @@ namespace servodrift::flow
     EXPECT_NE(sweep.iterations, jacobi.iterations);
   }
 
-  // The turbulent viscosity limit (`Pilot stage/Field turbulent viscosity limit', a multiple of the
+  // The turbulent viscosity limit (`Pilot stage/Field solution/Turbulent viscosity limit', a multiple of the
   // case's ideal-velocity Reynolds number) bounds transients only. RV-1's nozzle at its null with
   // k-epsilon (gap Re about 2 500, mu_t/mu up to about 14 converged): with the default 0.1 Re
   // (about 250) the limit is nowhere reached at convergence, and the answer is the one with the
@@ -121,7 +121,7 @@ namespace servodrift::flow
   {
     ValveDescription v = test::valve({"Flow solver/Turbulence model=k-epsilon"});
     const PilotFieldResult bounded = nozzle_at_null(v, 40e-6);
-    v.pilot.field_turbulent_viscosity_limit = 1e5; // far above any Re: the solver's own bound of 1e5 mu
+    v.pilot.field_solution.turbulent_viscosity_limit = 1e5; // far above any Re: the solver's own bound of 1e5 mu
     const PilotFieldResult unbounded = nozzle_at_null(v, 40e-6);
     std::printf("k-epsilon nozzle at the null: C_dn %.6f (limit 0.1 Re) vs %.6f (1e5 Re), F %.6f vs %.6f N\n",
                 bounded.discharge_coefficient, unbounded.discharge_coefficient, bounded.flapper_force,
@@ -130,7 +130,7 @@ namespace servodrift::flow
                           unbounded.discharge_coefficient, 1e-9, "limit 1e5 Re");
     EXPECT_CHECK_RELATIVE("flapper force, the same [N]", bounded.flapper_force, unbounded.flapper_force, 1e-9,
                           "limit 1e5 Re");
-    v.pilot.field_turbulent_viscosity_limit = 1e-3;
+    v.pilot.field_solution.turbulent_viscosity_limit = 1e-3;
     try
       {
         nozzle_at_null(v, 40e-6);
@@ -142,7 +142,7 @@ namespace servodrift::flow
       }
   }
 
-  // `Pilot stage/Nozzle stall window' is the nozzle cases' stall window, and the orifice's stays the
+  // `Pilot stage/Field solution/Nozzle stall window' is the nozzle cases' stall window, and the orifice's stays the
   // Flow solver's. A window of 20 calls the nozzle's SIMPLEC stalled within a few windows: with
   // SIMPLEC alone the case fails as stalled, while the orifice with the same valve converges; with
   // the default coupling it goes on coupled to the same answer as SIMPLEC's (one fixed point: within
@@ -154,9 +154,9 @@ namespace servodrift::flow
   TEST(PilotField, NozzleStallWindowIsTheNozzles)
   {
     ValveDescription v = test::valve();
-    v.pilot.field_cavitation = false;
+    v.pilot.field_solution.cavitation = false;
     const PilotFieldResult simplec = nozzle_at_null(v, 40e-6);
-    v.pilot.nozzle_stall_window = 20;
+    v.pilot.field_solution.nozzle_stall_window = 20;
     const PilotFieldResult coupled = nozzle_at_null(v, 40e-6);
     std::printf("laminar nozzle at the null: C_dn %.7f, F %.6f N in %u iterations (default stall window) vs "
                 "C_dn %.7f, F %.6f N in %u (window 20)\n",

@@ -93,7 +93,7 @@ namespace servodrift::flow
 
     ValveDescription coarse_valve()
     {
-      return test::valve({"Output/Progress=none", "Output/Flow fields=none", "Pilot stage/Field mesh resolution=0.5"});
+      return test::valve({"Output/Progress=none", "Output/Flow fields=none", "Pilot stage/Field mesh/Resolution=0.5"});
     }
   } // namespace
 
@@ -104,7 +104,7 @@ namespace servodrift::flow
   TEST(PilotFieldRetry, TheStallNearestASteadyStateIsRestoredAndRethrown)
   {
     const ValveDescription valve = coarse_valve();
-    PilotField field(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 100), 0);
+    PilotField field(pilot_field_settings(valve), PilotGeometry::fixed_orifice, pilot_field_case(valve, 100), 0);
     FailedAttempts attempts(case_level);
     fail(attempts, "from the chain's last state", field, 1, NotConverged("far", stall_at(0.2)));
     fail(attempts, "from rest", field, 2, NotConverged("near", stall_at(5e-3)));
@@ -133,7 +133,7 @@ namespace servodrift::flow
   TEST(PilotFieldRetry, ALastNearestStallStaysAndASingleFailureIsRethrownAsItWas)
   {
     const ValveDescription valve = coarse_valve();
-    PilotField field(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 100), 0);
+    PilotField field(pilot_field_settings(valve), PilotGeometry::fixed_orifice, pilot_field_case(valve, 100), 0);
     FailedAttempts one(case_level);
     fail(one, "from rest", field, 1, NotConverged("alone", stall_at(0.1)));
     EXPECT_FALSE(one.restore_nearest(field));
@@ -148,7 +148,7 @@ namespace servodrift::flow
     EXPECT_EQ(marker_of(field), 2);
 
     // the nearest stall's field, but another attempt ran in it since: its state is set back
-    PilotField other(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 100), 0);
+    PilotField other(pilot_field_settings(valve), PilotGeometry::fixed_orifice, pilot_field_case(valve, 100), 0);
     FailedAttempts three(case_level);
     fail(three, "from rest", field, 1, NotConverged("near", stall_at(5e-3)));
     fail(three, "from rest in smaller steps", field, 2, NotConverged("far", stall_at(0.2)));
@@ -171,7 +171,7 @@ namespace servodrift::flow
   TEST(PilotFieldRetry, WithoutAStallTheLastFailureIsRethrown)
   {
     const ValveDescription valve = coarse_valve();
-    PilotField field(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 100), 0);
+    PilotField field(pilot_field_settings(valve), PilotGeometry::fixed_orifice, pilot_field_case(valve, 100), 0);
     FailedAttempts attempts(case_level);
     fail(attempts, "from the chain's last state", field, 1, std::runtime_error("diverged first"));
     try
@@ -209,8 +209,8 @@ namespace servodrift::flow
   TEST(PilotFieldRetry, AStartThatDivergedRanksBetweenStallsAtTheCaseLevelAndOnTheWay)
   {
     const ValveDescription valve = coarse_valve();
-    PilotField field(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 90), 0);
-    PilotField start(valve, PilotGeometry::fixed_orifice, pilot_field_case(valve, 90), 0);
+    PilotField field(pilot_field_settings(valve), PilotGeometry::fixed_orifice, pilot_field_case(valve, 90), 0);
+    PilotField start(pilot_field_settings(valve), PilotGeometry::fixed_orifice, pilot_field_case(valve, 90), 0);
 
     FailedAttempts on_the_way(case_level);
     fail(on_the_way, "from the chain's last state", field, 1, NotConverged("far", stall_at(0.49)), 6.26e6);

@@ -63,7 +63,7 @@ namespace servodrift::flow
 
     PilotFieldCase c = pilot_field_case(v, 80);
     c.turbulence = FlowSolverParameters::Turbulence::k_epsilon; // Re_0 above 1 000: the stage's choice too
-    PilotField from_rest(v, PilotGeometry::fixed_orifice, c);
+    PilotField from_rest(pilot_field_settings(v), PilotGeometry::fixed_orifice, c);
     const PilotFieldResult r = from_rest.solve(row[1]);
 
     // the iterations of the stage's 80 degC case (flow/fixed_orifice_cases.csv)

@@ -11,7 +11,7 @@ namespace servodrift::flow::test_cases
   {
     PilotFieldCase c = pilot_field_case(v, 40);
     c.resolution = resolution;
-    PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, h);
+    PilotField nozzle(pilot_field_settings(v), PilotGeometry::nozzle_flapper, c, h);
     return nozzle.solve(10.4e6);
   }
 
@@ -19,7 +19,7 @@ namespace servodrift::flow::test_cases
   {
     PilotFieldCase c = pilot_field_case(v, 40);
     c.resolution = resolution;
-    PilotField orifice(v, PilotGeometry::fixed_orifice, c);
+    PilotField orifice(pilot_field_settings(v), PilotGeometry::fixed_orifice, c);
     return orifice.solve(400e3); // Re_0 = 493, laminar
   }
 } // namespace servodrift::flow::test_cases

@@ -53,15 +53,15 @@ namespace servodrift::flow
 
   TEST(PilotFieldTimeAverage, SteadyCaseAveragesToItsSteadySolution)
   {
-    ValveDescription v = test::valve({"Pilot stage/Field time steps=100", "Pilot stage/Field time step Courant number=10"});
+    ValveDescription v = test::valve({"Pilot stage/Time average/Steps=100", "Pilot stage/Time average/Courant number=10"});
     PilotFieldCase c = pilot_field_case(v, 40);
     c.turbulence = FlowSolverParameters::Turbulence::laminar;
-    PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, gap_40um);
+    PilotField nozzle(pilot_field_settings(v), PilotGeometry::nozzle_flapper, c, gap_40um);
     const PilotFieldResult steady = nozzle.solve(dp_laminar);
-    const TimeAverage a = time_average(nozzle, dp_laminar, v.pilot);
+    const TimeAverage a = time_average(nozzle, dp_laminar, v.pilot.time_average);
     std::printf("steady C_dn %.6f, F %.6f N; marched %u steps of %.3g s: C_dn %+.2e, F %+.2e relative, spreads "
                 "%.2e, %.2e relative, %u iterations\n",
-                steady.discharge_coefficient, steady.flapper_force, v.pilot.field_time_steps, a.time_step,
+                steady.discharge_coefficient, steady.flapper_force, v.pilot.time_average.steps, a.time_step,
                 a.mean.discharge_coefficient / steady.discharge_coefficient - 1, a.mean.flapper_force / steady.flapper_force - 1,
                 a.discharge_coefficient_spread / steady.discharge_coefficient, a.flapper_force_spread / steady.flapper_force,
                 a.mean.iterations);
@@ -103,10 +103,10 @@ namespace servodrift::flow
     // ((3 M_N - M_N-1) - (3 M_2 - M_1)) / 2 within that floor's sum and what each step leaves
     // unconverged (its continuity, 1e-4 of the throughput); the mass change must be more than 10 %
     // of a step's throughput, or the test would not see the outlet's share.
-    ValveDescription v = test::valve({"Pilot stage/Field mesh resolution=0.5"});
+    ValveDescription v = test::valve({"Pilot stage/Field mesh/Resolution=0.5"});
     PilotFieldCase c = pilot_field_case(v, 40);
     c.turbulence = FlowSolverParameters::Turbulence::k_epsilon;
-    PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, 40e-6);
+    PilotField nozzle(pilot_field_settings(v), PilotGeometry::nozzle_flapper, c, 40e-6);
     ASSERT_TRUE(nozzle.solve(10.4e6).cavitating);
     const double dp = 15e6, dt = nozzle.courant_time_step(1), r_v = v.flow_solver.vapour_density_ratio;
     const FvMesh &mesh = nozzle.mesh();
@@ -129,7 +129,7 @@ namespace servodrift::flow
     double in_minus_out = 0, floor = 0, throughput = 0;
     for (unsigned int n = 1; n <= steps; ++n)
       {
-        const PilotFieldResult r = nozzle.advance(dp, dt, v.pilot.field_time_step_iterations, step_tolerance);
+        const PilotFieldResult r = nozzle.advance(dp, dt, v.pilot.time_average.step_iterations, step_tolerance);
         ASSERT_TRUE(r.step_converged) << "step " << n;
         EXPECT_DOUBLE_EQ(r.flow_rate, -nozzle.solver().flow_rate("inlet"));
         const FlowFields f = nozzle.fields();
@@ -156,7 +156,7 @@ namespace servodrift::flow
 
   SLOW_TEST(PilotFieldStage, StalledLaminarCaseIsReportedByItsTimeAverage)
   {
-    const std::vector<std::string> laminar{"Pilot stage/Nozzle flow model=laminar", "Output/Progress=none",
+    const std::vector<std::string> laminar{"Pilot stage/Field solution/Nozzle flow model=laminar", "Output/Progress=none",
                                            "Output/Flow fields=none"};
     ValveDescription converging = test::valve(laminar);
     using namespace case_record;
@@ -166,7 +166,7 @@ namespace servodrift::flow
 
     std::vector<std::string> stalling = laminar;
     for (const char *s : {"Flow solver/Tolerance=1e-14", "Flow solver/Maximum iterations=600",
-                          "Pilot stage/Field time steps=400", "Pilot stage/Field time step Courant number=10"})
+                          "Pilot stage/Time average/Steps=400", "Pilot stage/Time average/Courant number=10"})
       stalling.push_back(s);
     std::vector<std::string> with_fields = stalling;
     with_fields.push_back("Output/Flow fields=all");
@@ -200,10 +200,10 @@ namespace servodrift::flow
     std::printf("its VTU's pressure against the converged case's: %.2e dp at most\n", p_difference);
     EXPECT_LT(p_difference, 1e-2);
 
-    // a mean uncertain beyond `Field time average uncertainty limit' (0 here: any) is not used: flag
+    // a mean uncertain beyond `Time average/Uncertainty limit' (0 here: any) is not used: flag
     // 2, the reduced-order value in the row, the average kept for flow/*_time_averages.csv
-    stalling.push_back("Pilot stage/Field time average uncertainty limit=0");
-    stalling.push_back("Pilot stage/Field time steps limit=400"); // no lengthening: any mean is uncertain against 0
+    stalling.push_back("Pilot stage/Time average/Uncertainty limit=0");
+    stalling.push_back("Pilot stage/Time average/Steps limit=400"); // no lengthening: any mean is uncertain against 0
     ValveDescription strict = test::valve(stalling);
     const std::vector<double> rejected = Chain(strict, PilotGeometry::nozzle_flapper, 40).solve(gap_40um, dp_laminar);
     EXPECT_EQ(rejected[flag], flags::not_converged);
@@ -223,15 +223,15 @@ namespace servodrift::flow
   {
     for (const unsigned int iterations : {50u, 1u})
       {
-        ValveDescription v = test::valve({"Pilot stage/Field time steps=100", "Pilot stage/Field time step Courant number=10",
-                                          "Pilot stage/Field time step halvings=0", "Pilot stage/Field time steps limit=400",
-                                          "Pilot stage/Field time average uncertainty limit=0",
-                                          "Pilot stage/Field time step iterations=" + std::to_string(iterations)});
+        ValveDescription v = test::valve({"Pilot stage/Time average/Steps=100", "Pilot stage/Time average/Courant number=10",
+                                          "Pilot stage/Time average/Step halvings=0", "Pilot stage/Time average/Steps limit=400",
+                                          "Pilot stage/Time average/Uncertainty limit=0",
+                                          "Pilot stage/Time average/Step iterations=" + std::to_string(iterations)});
         PilotFieldCase c = pilot_field_case(v, 40);
         c.turbulence = FlowSolverParameters::Turbulence::laminar;
-        PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, gap_40um);
+        PilotField nozzle(pilot_field_settings(v), PilotGeometry::nozzle_flapper, c, gap_40um);
         nozzle.solve(dp_laminar);
-        const TimeAverage a = time_average(nozzle, 2 * dp_laminar, v.pilot);
+        const TimeAverage a = time_average(nozzle, 2 * dp_laminar, v.pilot.time_average);
         std::printf("%u iterations a step: %u of %u averaged steps capped, C_dn %.5f\n", iterations, a.unconverged_steps,
                     a.averaged_steps, a.mean.discharge_coefficient);
         test::record_check("averaged steps, " + std::to_string(iterations) + " iterations a step",
@@ -257,31 +257,31 @@ namespace servodrift::flow
   }
 
   // A march whose steps the cap stops too often is marched again from where it ended at half the
-  // Courant number (`Field time step halvings'). The same case as above, the cap at 4 iterations: from
+  // Courant number (`Time average/Step halvings'). The same case as above, the cap at 4 iterations: from
   // the 0.1 MPa state every averaged step at Courant 10, 5 and 2.5 is capped (the flow speeding up
   // changes more in a longer step), none at 1.25 (2026-11-28). With no halving the march is refused
   // at Courant 10; with three it ends at a Courant number where the steps converge (5: the march
   // before has brought the flow near its new state), its iterations counting every march's, and its
   // mean has made the move from the 0.1 MPa solution's C_dn (0.423) to the 0.2 MPa one's (0.538, 27 %
-  // up) to within 1 %, the error a time average is allowed (`Field time average uncertainty limit'):
+  // up) to within 1 %, the error a time average is allowed (`Time average/Uncertainty limit'):
   // 0.18 % above it, still settling (a viscous time of the bore is far longer than the 200 steps).
   TEST(PilotFieldTimeAverage, TooManyCappedStepsAreMarchedAgainAtHalfTheCourantNumber)
   {
-    std::vector<std::string> settings{"Pilot stage/Field time steps=100", "Pilot stage/Field time step Courant number=10",
-                                      "Pilot stage/Field time steps limit=100", "Pilot stage/Field time step iterations=4"};
+    std::vector<std::string> settings{"Pilot stage/Time average/Steps=100", "Pilot stage/Time average/Courant number=10",
+                                      "Pilot stage/Time average/Steps limit=100", "Pilot stage/Time average/Step iterations=4"};
     ValveDescription v = test::valve(settings);
     PilotFieldCase c = pilot_field_case(v, 40);
     c.turbulence = FlowSolverParameters::Turbulence::laminar;
-    PilotField steady(v, PilotGeometry::nozzle_flapper, c, gap_40um);
+    PilotField steady(pilot_field_settings(v), PilotGeometry::nozzle_flapper, c, gap_40um);
     const double C_dn = steady.solve(2 * dp_laminar).discharge_coefficient;
     for (const unsigned int halvings : {0u, 3u})
       {
-        settings.push_back("Pilot stage/Field time step halvings=" + std::to_string(halvings));
+        settings.push_back("Pilot stage/Time average/Step halvings=" + std::to_string(halvings));
         v = test::valve(settings);
-        PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, gap_40um);
+        PilotField nozzle(pilot_field_settings(v), PilotGeometry::nozzle_flapper, c, gap_40um);
         const double C_dn_start = nozzle.solve(dp_laminar).discharge_coefficient;
         unsigned int rejected_iterations = 0, marches = 0;
-        const TimeAverage a = time_average(nozzle, 2 * dp_laminar, v.pilot, {}, [&](const TimeAverage &rejected) {
+        const TimeAverage a = time_average(nozzle, 2 * dp_laminar, v.pilot.time_average, {}, [&](const TimeAverage &rejected) {
           EXPECT_FALSE(steps_converged(rejected));
           EXPECT_EQ(rejected.courant_number, 10 / std::pow(2.0, marches));
           rejected_iterations += rejected.mean.iterations, ++marches;
@@ -326,11 +326,11 @@ namespace servodrift::flow
   {
     // (the limit: 100 steps and no more; the cavity moves by 0.1-0.7 % of the force over them, a trend
     // whose span a time average would lengthen to, and beyond which the cavity moves on: above)
-    ValveDescription v = test::valve({"Pilot stage/Field time steps=100", "Pilot stage/Field time steps limit=100",
-                                      "Pilot stage/Field time step Courant number=1", "Pilot stage/Field mesh resolution=0.5"});
+    ValveDescription v = test::valve({"Pilot stage/Time average/Steps=100", "Pilot stage/Time average/Steps limit=100",
+                                      "Pilot stage/Time average/Courant number=1", "Pilot stage/Field mesh/Resolution=0.5"});
     PilotFieldCase c = pilot_field_case(v, 40);
     c.turbulence = GetParam();
-    PilotField nozzle(v, PilotGeometry::nozzle_flapper, c, 40e-6);
+    PilotField nozzle(pilot_field_settings(v), PilotGeometry::nozzle_flapper, c, 40e-6);
     const PilotFieldResult steady = nozzle.solve(10.4e6);
     ASSERT_TRUE(steady.cavitating);
     // a time step meters the inlet; the steady state its outlet, which the cavitating cells' mass
@@ -338,7 +338,7 @@ namespace servodrift::flow
     // 0.03 % two-layer k-epsilon here): the march is compared with the steady inlet's C_dn
     const double inlet_share = -nozzle.solver().flow_rate("inlet") / steady.flow_rate;
     const double steady_inlet_discharge = inlet_share * steady.discharge_coefficient; // C_d is Q over a fixed flow
-    const TimeAverage a = time_average(nozzle, 10.4e6, v.pilot);
+    const TimeAverage a = time_average(nozzle, 10.4e6, v.pilot.time_average);
     std::printf("cavitating null, %s: steady C_dn %.6f (its inlet's %.6f), F %.6f N; marched: C_dn %+.2e, F %+.2e "
                 "relative, spreads %.2e, %.2e, %u iterations\n",
                 model_name(GetParam()), steady.discharge_coefficient, steady_inlet_discharge, steady.flapper_force,

@@ -284,7 +284,7 @@ TEST(DriftMap, PaperPresetFlowForceFollowsThePaperTable)
 {
   // D2: with the paper-table flapper force, the system model's K_f(T) at null is the paper's
   // (section 3 item 10), up to the tables' interpolation (PCHIP in T, gap and dp): 1 %.
-  const Valve paper({"Pilot stage/Flapper force law=paper-table", "Sweeps/Table temperatures=40, 50, 60, 70, 80, 90, 100, 110, 120",
+  const Valve paper({"Pilot stage/Reduced order/Flapper force law=paper-table", "Sweeps/Table temperatures=40, 50, 60, 70, 80, 90, 100, 110, 120",
                      "Sweeps/Drift temperatures=40, 120"});
   const double expected[] = {57.5e3, 29.5e3, 15.2e3, 21.0e3, 25.5e3, 28.9e3, 31.4e3, 33.2e3, 34.5e3};
   double error = 0;
@@ -340,7 +340,7 @@ TEST(ModelForm, SpreadOfAlternativeTables)
     row[force] *= 1.1;
   nozzle.write(dir + "/nozzle_flapper.stronger.csv");
   orifice.write(dir + "/fixed_orifice.stronger.csv");
-  v.pilot.model_form_alternatives = {"same", "stronger", "absent"};
+  v.pilot.field_solution.model_form_alternatives = {"same", "stronger", "absent"};
   const auto r = system::compute(v, dir);
   ASSERT_EQ(r.model_form.size(), 3u);
   EXPECT_EQ(r.model_form[1].model, "same");

@@ -197,7 +197,7 @@ namespace servodrift::flow
   // A window shorter than its flow's cycle is lengthened until it spans it (AveragingPlan with the
   // steps the motion needs, as time_average runs it). Series 1 + 0.05 sin(2 pi t/P + phase) + 0.005
   // e_t (white noise), P = 2 000 steps, at 64 phases; the plan starts with 400 steps (200 averaged: a
-  // tenth of the cycle, as Courant 0.25 with the default `Field time steps' left Launder-Sharma's hot
+  // tenth of the cycle, as Courant 0.25 with the default `Time average/Steps' left Launder-Sharma's hot
   // cavity, doc/validation.md), limit 0.5 %. Without the span, batch means of the first window see
   // a trend, claim a small error and stop most runs with means off by more than twice the limit;
   // with it at most a quarter do: those whose first window lies on the cycle's crest or trough,

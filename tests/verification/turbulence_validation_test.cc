@@ -359,7 +359,7 @@ namespace servodrift::flow
   {
     ValveDescription v = test::valve();
     v.flow_solver.tolerance = 1e-6;
-    v.pilot.field_cavitation = false;
+    v.pilot.field_solution.cavitation = false;
     PilotFieldCase c = pilot_field_case(v, 40);
     c.turbulence = GetParam();
     const double mu = c.fluid.viscosity, dp = 10.3e6;
@@ -370,7 +370,7 @@ namespace servodrift::flow
     for (double Re : {5000.0, 20000.0})
       {
         c.fluid.viscosity = mu * reynolds_at_mu / Re;
-        auto orifice = std::make_unique<PilotField>(v, PilotGeometry::fixed_orifice, c);
+        auto orifice = std::make_unique<PilotField>(pilot_field_settings(v), PilotGeometry::fixed_orifice, c);
         if (previous)
           orifice->initialize_from(*previous);
         const PilotFieldResult r = orifice->solve(dp);
@@ -390,10 +390,10 @@ namespace servodrift::flow
   {
     ValveDescription v = test::valve();
     v.flow_solver.tolerance = 1e-6;
-    v.pilot.field_cavitation = true;
+    v.pilot.field_solution.cavitation = true;
     PilotFieldCase c = pilot_field_case(v, 40);
     c.turbulence = GetParam();
-    PilotField cavitating(v, PilotGeometry::fixed_orifice, c);
+    PilotField cavitating(pilot_field_settings(v), PilotGeometry::fixed_orifice, c);
     for (double level : {15.45e6, 20.6e6})
       {
         const PilotFieldResult r = cavitating.solve(level);
