@@ -141,7 +141,8 @@ TEST(ValveDescription, PrintedParameterFileReadsBack)
   const std::string path = write_file("rv1.prm", text);
   EXPECT_EQ(load_valve_description(path).parameters_sha256, load_valve_description().parameters_sha256);
   // every entry documents its unit as the last thing of its doc string
-  const std::string md = print_parameters("", {}, ParameterFormat::markdown);
+  const std::string full_md = print_parameters("", {}, ParameterFormat::markdown);
+  const std::string md = full_md.substr(0, full_md.find("\n## Moved entries")); // the entries' table
   std::size_t rows = 0, pos = 0;
   while ((pos = md.find("\n| `", pos)) != std::string::npos)
     {
