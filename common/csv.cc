@@ -2,6 +2,8 @@
 
 #include "common/output_files.h"
 
+#include <algorithm>
+#include <sstream>
 #include <stdexcept>
 
 namespace servodrift
@@ -35,5 +37,39 @@ namespace servodrift
         s += "\n";
       }
     return s;
+  }
+
+  CsvDocument CsvDocument::parse(const std::string &text)
+  {
+    CsvDocument doc;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+      {
+        if (line.empty())
+          continue;
+        if (line[0] == '#')
+          {
+            if (line.rfind("# columns", 0) != 0)
+              doc.comments.push_back(line.substr(line.size() > 1 && line[1] == ' ' ? 2 : 1));
+            continue;
+          }
+        std::vector<std::string> cells;
+        std::istringstream fields(line);
+        for (std::string cell; std::getline(fields, cell, ',');)
+          cells.push_back(cell);
+        if (doc.columns.empty())
+          doc.columns = cells;
+        else
+          doc.rows.push_back(cells);
+      }
+    return doc;
+  }
+
+  std::size_t CsvDocument::column(const std::string &name) const
+  {
+    const auto k = std::find(columns.begin(), columns.end(), name);
+    if (k == columns.end())
+      throw std::out_of_range("no column " + name);
+    return static_cast<std::size_t>(k - columns.begin());
   }
 } // namespace servodrift

@@ -13,6 +13,12 @@ namespace servodrift
 
     /// The comments, a "# columns ..." line, the column header row and the rows.
     std::string text() const;
+    /// The document that text() wrote: the '#' lines its comments (without the "# columns" line),
+    /// the first other line its columns, the rest its rows, cells split at commas (its cells hold
+    /// none).
+    static CsvDocument parse(const std::string &text);
+    /// The index of the column `name' ("name[unit]"); throws std::out_of_range if there is none.
+    std::size_t column(const std::string &name) const;
   };
 
   /// One field of a CSV record in double quotes, its quotes doubled (RFC 4180): for free text, as the

@@ -10,9 +10,16 @@
 #include "common/vtu_output.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
+#include <set>
 #include <string>
 #include <utility>
+
+namespace servodrift::embedded
+{
+  extern const char *const nozzle_mesh_errors_csv; ///< doc/benchmarks/nozzle_mesh_errors.csv
+} // namespace servodrift::embedded
 
 namespace servodrift::flow
 {
@@ -28,27 +35,50 @@ namespace servodrift::flow
       return n;
     }
 
-    /// The discretisation error of the nozzle-flapper cases at the valve's mesh resolution, as measured
-    /// on RV-1 by bench/bench_mesh_convergence (40 degC, 10.4 MPa, the default two-layer k-epsilon, Richardson's
-    /// extrapolation from resolutions 1, 2 and 3; doc/validation.md, "Mesh convergence"). A record of
-    /// that measurement, for the table's header: re-run the bench when the mesh or the solver changes.
-    std::string nozzle_mesh_error_note(const ValveDescription &valve)
+    /// The errors of resolution `resolution' in doc/benchmarks/nozzle_mesh_errors.csv (written by
+    /// bench/bench_mesh_convergence, compiled in): the smallest and largest of C_dn's and of the
+    /// flapper force's, the gaps [m], the cavitation settings and how many rows rest on two levels.
+    struct MeasuredErrors
     {
-      const double resolution = valve.pilot.field_mesh.resolution;
-      if (valve.pilot.field_solution.nozzle_flow_model != PilotFieldSolutionParameters::FlowModel::k_epsilon)
-        return "mesh resolution " + format_number(resolution) +
-               ": the nozzle's discretisation error was measured with the default two-layer k-epsilon "
-               "(bench/bench_mesh_convergence); for this flow model see doc/validation.md";
-      const std::string measured = "mesh resolution " + format_number(resolution) +
-                                   ": discretisation error measured on RV-1 with the default two-layer k-epsilon "
-                                   "(bench/bench_mesh_convergence, doc/validation.md): ";
-      if (resolution == 1)
-        return measured + "C_dn -2.8 % to +0.5 %, flapper force -0.2 % to +1.3 % at gaps 10 and 40 um; "
-                          "about 1.6 % in C_dn and 2.8 % in force at 70 um (two-level estimate)";
-      if (resolution == 2)
-        return measured + "C_dn and flapper force within 0.7 % at gaps 10 and 40 um";
-      return "mesh resolution " + format_number(resolution) +
-             ": discretisation error not measured at this resolution (measured at 1 and 2: doc/validation.md)";
+      double lowest_discharge = 0, highest_discharge = 0, lowest_force = 0, highest_force = 0;
+      std::vector<double> gaps;
+      std::set<std::string> cavitation; ///< "on", "off"
+      std::size_t rows = 0, two_level_rows = 0;
+    };
+
+    MeasuredErrors measured_mesh_errors(double resolution)
+    {
+      MeasuredErrors e;
+      const CsvDocument errors = CsvDocument::parse(embedded::nozzle_mesh_errors_csv);
+      const std::size_t at_resolution = errors.column("resolution[1]"), at_gap = errors.column("gap[m]"),
+                        at_discharge = errors.column("discharge_coefficient_error[1]"),
+                        at_force = errors.column("flapper_force_error[1]"), at_estimate = errors.column("estimate"),
+                        at_cavitation = errors.column("cavitation");
+      for (const auto &row : errors.rows)
+        {
+          if (std::stod(row.at(at_resolution)) != resolution)
+            continue;
+          const double discharge = std::stod(row.at(at_discharge)), force = std::stod(row.at(at_force));
+          const double gap = std::stod(row.at(at_gap));
+          if (e.rows++ == 0)
+            e.lowest_discharge = e.highest_discharge = discharge, e.lowest_force = e.highest_force = force;
+          e.lowest_discharge = std::min(e.lowest_discharge, discharge);
+          e.highest_discharge = std::max(e.highest_discharge, discharge);
+          e.lowest_force = std::min(e.lowest_force, force);
+          e.highest_force = std::max(e.highest_force, force);
+          e.two_level_rows += row.at(at_estimate).rfind("two levels", 0) == 0;
+          e.cavitation.insert(row.at(at_cavitation));
+          if (std::find(e.gaps.begin(), e.gaps.end(), gap) == e.gaps.end())
+            e.gaps.push_back(gap);
+        }
+      return e;
+    }
+
+    std::string percent(double fraction)
+    {
+      char s[32];
+      std::snprintf(s, sizeof s, "%+.1f %%", 100 * fraction);
+      return s;
     }
 
     /// A document of the field-level cases: its header lines and the columns of a case's inputs.
@@ -98,6 +128,31 @@ namespace servodrift::flow
       write_file_atomically(flow_directory(valve) + "/" + name + "_time_averages" + variant + ".csv", doc.text());
     }
   } // namespace
+
+  std::string nozzle_mesh_error_note(const ValveDescription &valve)
+  {
+    const double resolution = valve.pilot.field_mesh.resolution;
+    const std::string source = "(bench/bench_mesh_convergence, doc/benchmarks/nozzle_mesh_errors.csv)";
+    if (valve.pilot.field_solution.nozzle_flow_model != PilotFieldSolutionParameters::FlowModel::k_epsilon)
+      return "mesh resolution " + format_number(resolution) +
+             ": the nozzle's discretisation error was measured with the default two-layer k-epsilon " + source +
+             "; for this flow model see doc/validation.md";
+    const MeasuredErrors e = measured_mesh_errors(resolution);
+    if (e.rows == 0)
+      return "mesh resolution " + format_number(resolution) +
+             ": the nozzle's discretisation error is not measured at this resolution " + source;
+    std::string gaps;
+    for (double gap : e.gaps)
+      gaps += (gaps.empty() ? "" : ", ") + format_number(gap * 1e6);
+    return "mesh resolution " + format_number(resolution) +
+           ": discretisation error measured on RV-1 at 40 degC with the default two-layer k-epsilon " + source +
+           ": C_dn " + percent(e.lowest_discharge) + " to " + percent(e.highest_discharge) + ", flapper force " +
+           percent(e.lowest_force) + " to " + percent(e.highest_force) + " at gaps " + gaps +
+           " um, " + (e.cavitation.size() == 2 ? "with and without cavitation" : "cavitation " + *e.cavitation.begin()) +
+           (e.two_level_rows > 0 ? " (" + std::to_string(e.two_level_rows) + " of " + std::to_string(e.rows) +
+                                     " from two levels)" :
+                                   "");
+  }
 
   void write_case_summary(const ValveDescription &valve, PilotGeometry g, const CaseRows &records,
                           const std::string &variant)

@@ -202,6 +202,10 @@ namespace servodrift::flow
   /// The warnings and notes of a geometry's cases on stderr (rank 0): not converged, beyond the
   /// verified range, cavitating.
   void report_counts(const char *what, const CaseRows &records, bool valve_cavitation);
+  /// The nozzle table's note on its discretisation error at the valve's mesh resolution, from the
+  /// errors bench/bench_mesh_convergence measured on RV-1 (doc/benchmarks/nozzle_mesh_errors.csv,
+  /// compiled in): their range at that resolution, or that none was measured there.
+  std::string nozzle_mesh_error_note(const ValveDescription &valve);
   /// The tables from the records (in increasing temperature), with the exact no-flow rows (flag 3).
   Table fixed_orifice_table(const ValveDescription &valve, const CaseRows &records);
   Table nozzle_flapper_table(const ValveDescription &valve, const CaseRows &records);

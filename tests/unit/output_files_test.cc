@@ -118,3 +118,21 @@ TEST(NonFiniteOutput, RefusedInResultFilesOnly)
       EXPECT_NE(std::string(e.what()).find("column b[1], row 2"), std::string::npos) << e.what();
     }
 }
+
+// A CSV document reads back as it was written: comments (not the generated "# columns" line),
+// columns and rows, empty cells kept; a column is found by its name with its unit.
+TEST(CsvDocument, ParseReadsBackWhatTextWrote)
+{
+  CsvDocument doc;
+  doc.comments = {"servodrift-output x", "a note, with a comma"};
+  doc.columns = {"gap[m]", "estimate", "error[1]"};
+  doc.rows = {{"1e-05", "three levels (order 2.1)", "-0.0118"}, {"4e-05", "two levels: order 2", ""}};
+  const CsvDocument read = CsvDocument::parse(doc.text());
+  EXPECT_EQ(read.comments, doc.comments);
+  EXPECT_EQ(read.columns, doc.columns);
+  ASSERT_EQ(read.rows.size(), 2u);
+  EXPECT_EQ(read.rows[0], doc.rows[0]);
+  EXPECT_EQ(read.rows[1][1], "two levels: order 2");
+  EXPECT_EQ(read.column("error[1]"), 2u);
+  EXPECT_THROW(read.column("error"), std::out_of_range);
+}
