@@ -38,7 +38,7 @@ namespace servodrift
                                              "(`Torque motor/Coil drive' = voltage)");
 
     // Every current the analyses command must lie in the torque table: bias -+ the largest sine
-    // amplitude, the small step, 0 and the rated current. Under voltage drive the coil current is a
+    // amplitude, the small step, the cold start and the rated current. Under voltage drive the coil current is a
     // state: a cold coil draws R_c(T0)/R_c(T) of the command, and near the armature's resonance the
     // back-EMF lets it overshoot by some 10 %, so the table must reach 1.25 times that.
     double ratio = 1;
@@ -48,19 +48,32 @@ namespace servodrift
           ratio = std::max(ratio, laws::coil_resistance(tm, op.reference_temperature) / laws::coil_resistance(tm, T));
         ratio *= 1.25;
       }
+    // The commands, each with the entry that asks for it, so that a refusal names that entry
     const double rated = op.rated_current, bias = d.bias * rated;
-    const double amplitude = std::max(d.sine_amplitudes.back(), d.sine_check_amplitude) * rated;
-    const double lowest = std::min({0.0, bias - amplitude}) * ratio;
-    const double highest =
-      std::max({rated, bias + amplitude, bias + d.small_step * rated, d.cold_start_current * rated}) * ratio;
+    const bool check_amplitude_largest = d.sine_check_amplitude > d.sine_amplitudes.back();
+    const std::string amplitude_entry = check_amplitude_largest ? "Dynamics/Sine check amplitude" : "Dynamics/Sine amplitudes";
+    const double amplitude = (check_amplitude_largest ? d.sine_check_amplitude : d.sine_amplitudes.back()) * rated;
+    const std::vector<std::pair<std::string, double>> commands{{amplitude_entry, bias - amplitude},
+                                                               {amplitude_entry, bias + amplitude},
+                                                               {"Dynamics/Small step", bias + d.small_step * rated},
+                                                               {"Dynamics/Cold-start current", d.cold_start_current * rated},
+                                                               {"Operating conditions/Rated current", rated}};
     const auto &currents = sw.motor_currents;
-    if (lowest < currents.front() || highest > currents.back())
-      refuse("Dynamics/Sine amplitudes",
-             "with `Dynamics/Bias' = " + format_number(d.bias) + " command currents from " + format_number(lowest) +
-               " to " + format_number(highest) + " A" +
-               (tm.voltage_drive ? " (under voltage drive: a cold coil's current with 25 % for its overshoot)" : "") +
-               ", beyond the torque table's `Sweeps/Motor currents' [" + format_number(currents.front()) + ", " +
-               format_number(currents.back()) + "] A; lower the amplitudes or the bias, or extend the currents");
+    if (!(currents.front() <= 0 && currents.back() >= 0))
+      refuse("Sweeps/Motor currents", "from " + format_number(currents.front()) + " to " +
+                                        format_number(currents.back()) + " A must hold 0 A, where the dynamics start");
+    for (const auto &[entry, command] : commands)
+      {
+        const double coil = command * ratio;
+        if (coil >= currents.front() && coil <= currents.back())
+          continue;
+        refuse(entry, "with `Dynamics/Bias' = " + format_number(d.bias) + " commands " + format_number(command) + " A" +
+                        (tm.voltage_drive ? " (under voltage drive a cold coil's current, with 25 % for its overshoot, " +
+                                              format_number(coil) + " A)" :
+                                            "") +
+                        ", beyond the torque table's `Sweeps/Motor currents' [" + format_number(currents.front()) + ", " +
+                        format_number(currents.back()) + "] A; lower it, or extend the currents");
+      }
     // The flapper may reach a nozzle in a transient (it saturates there): the torque table must
     // reach the nozzle contacts, theta = (+-x0(T) + x_n)/r.
     double contact = 0;
