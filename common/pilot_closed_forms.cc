@@ -51,6 +51,14 @@ namespace servodrift
     return reynolds_number > 0 ? 1.0 / (1.0 / C_du + 20.0 * (1.0 + 2.25 * length_over_diameter) / reynolds_number) : 0.0;
   }
 
+  double nozzle_reynolds_number(double nozzle_diameter, double gap, double discharge_coefficient,
+                                double ideal_velocity, double kinematic_viscosity)
+  {
+    // E18
+    const double D_h = 2 * pi * nozzle_diameter * gap / (pi * nozzle_diameter + gap);
+    return D_h * discharge_coefficient * ideal_velocity / kinematic_viscosity;
+  }
+
   OrificeState PilotClosedForms::fixed_orifice(double dp) const
   {
     OrificeState s;
@@ -96,9 +104,7 @@ namespace servodrift
         s.clamped = c.clamped;
         s.flow_rate = c.value * curtain * ideal_velocity; // E32
       }
-    // E18: Re_n = D_h C_dn sqrt(2 dp/rho)/nu with the slot hydraulic diameter D_h = 2 pi D_N h/(pi D_N + h)
-    const double D_h = 2 * pi * DN * h / (pi * DN + h);
-    s.reynolds_number = D_h * s.discharge_coefficient * ideal_velocity / nu;
+    s.reynolds_number = nozzle_reynolds_number(DN, h, s.discharge_coefficient, ideal_velocity, nu); // E18
     s.flapper_force = momentum_force(dp, s.flow_rate);
     return s;
   }
@@ -123,8 +129,7 @@ namespace servodrift
     s.flow_rate = dp / (bore + land);
     const double ideal_velocity = std::sqrt(2 * dp / rho);
     s.discharge_coefficient = s.flow_rate / (pi * g.nozzle_diameter * h * ideal_velocity); // on the curtain
-    const double D_h = 2 * pi * g.nozzle_diameter * h / (pi * g.nozzle_diameter + h); // E18
-    s.reynolds_number = D_h * s.discharge_coefficient * ideal_velocity / nu;
+    s.reynolds_number = nozzle_reynolds_number(g.nozzle_diameter, h, s.discharge_coefficient, ideal_velocity, nu);
     return s;
   }
 

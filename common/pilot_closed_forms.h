@@ -19,6 +19,11 @@ namespace servodrift
   /// C_du = 0.827 - 0.0085 l/d; Re on the ideal velocity (E17), l/d of the bore. 0 at Re = 0.
   double lichtarowicz_discharge_coefficient(double reynolds_number, double length_over_diameter);
 
+  /// E18: the nozzle curtain's Reynolds number Re_n = D_h C_dn v_ideal / nu, on the slot's hydraulic
+  /// diameter D_h = 2 pi D_N h/(pi D_N + h) [1]; v_ideal = sqrt(2 dp/rho) [m/s], nu [m^2/s].
+  double nozzle_reynolds_number(double nozzle_diameter, double gap, double discharge_coefficient,
+                                double ideal_velocity, double kinematic_viscosity);
+
   class PilotClosedForms
   {
   public:

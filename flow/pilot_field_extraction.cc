@@ -1,6 +1,7 @@
 // What a pilot-stage case's fields give (model.md 4.2): Q, C_d, Re, the forces and the diagnostics.
 #include "flow/pilot_field_extraction.h"
 
+#include "common/pilot_closed_forms.h"
 #include "common/units.h"
 
 #include <algorithm>
@@ -40,8 +41,7 @@ namespace servodrift::flow
       }
     const double D_N = 2 * shape.bore_radius, h = shape.gap;
     r.discharge_coefficient = r.flow_rate / (units::pi * D_N * h * v_ideal); // curtain area (4.2)
-    const double hydraulic_diameter = 2 * units::pi * D_N * h / (units::pi * D_N + h);
-    r.reynolds_number = hydraulic_diameter * r.discharge_coefficient * v_ideal * rho / mu; // E18
+    r.reynolds_number = nozzle_reynolds_number(D_N, h, r.discharge_coefficient, v_ideal, mu / rho); // E18
     const Vector2 axial(1, 0);
     r.flapper_force = solver.pressure_force("flapper", axial);
     r.land_force = solver.pressure_force("land", -axial);
