@@ -60,7 +60,7 @@ namespace servodrift::structure
     /// make_grid, setup_system, assemble_system, and the two unit-motion solves.
     void run();
 
-    /// [[dM/dtheta, dM/ddelta], [dV/dtheta, dV/ddelta]] of the top [N*m/rad, N/rad; N, N/m].
+    /// [[dM/dtheta, dM/ddelta], [dV/dtheta, dV/ddelta]] of the top [N*m/rad, N; N/rad, N/m].
     Matrix2 stiffness() const;
     /// Inverse of the stiffness: [theta, delta] = C [M, V] [rad/(N*m), rad/N; m/(N*m), m/N].
     Matrix2 compliance() const;

@@ -33,6 +33,13 @@ namespace servodrift::system
       return report_number(v, digits);
     }
 
+    /// A null-shift current as the report shows it [A]: below 1 nA, the round-off of a valve nulled
+    /// at that temperature, it is 0.
+    double shown_current(double current)
+    {
+      return std::abs(current) > 1e-9 ? current : 0.0;
+    }
+
     std::string percent(double value, double reference)
     {
       char b[32];
@@ -225,8 +232,7 @@ namespace servodrift::system
                "the slope ratio above is the scale-free measure.\n\n";
       const auto &p40 = m.at(*t40, a_max), &p120 = m.at(*t120, a_max);
       auto current = [&](const DriftPoint &p) {
-        // below 1 nA the null-shift current is zero up to the root finder's tolerance
-        const double i = p.null_shift_current && std::abs(*p.null_shift_current) > 1e-9 ? *p.null_shift_current : 0.0;
+        const double i = p.null_shift_current ? shown_current(*p.null_shift_current) : 0.0;
         return p.null_shift_current ? fmt(i * 1e3) + " mA (" + fmt(100 * i / valve.operating.rated_current) +
                                         " % of rated)" :
                                       std::string("beyond the torque table's currents");
@@ -273,8 +279,7 @@ namespace servodrift::system
       const auto cell = [&](const DriftPoint &p) {
         if (!p.null_shift_current)
           return std::string("n/a");
-        // below 1 nA the null-shift current is zero up to the root finder's tolerance
-        const double i = std::abs(*p.null_shift_current) > 1e-9 ? *p.null_shift_current : 0.0;
+        const double i = shown_current(*p.null_shift_current);
         return fmt(100 * i / rated, 3);
       };
       for (std::size_t k = 0; k < m.temperatures.size(); ++k)
