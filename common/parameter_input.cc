@@ -4,8 +4,8 @@
 
 #include "common/error.h"
 #include "common/parameter_messages.h"
+#include "common/moved_entries.h"
 #include "common/parameters/renamed_entries.h"
-#include "common/sweep.h"
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
@@ -20,10 +20,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
-#include <mutex>
 #include <optional>
-#include <set>
 #include <sstream>
 
 namespace servodrift
@@ -34,24 +31,6 @@ namespace servodrift
   namespace
   {
     const std::string list_hint = " (`servodrift params' lists every entry)";
-
-    std::string info_of(const dealii::ExceptionBase &e)
-    {
-      std::ostringstream s;
-      e.print_info(s);
-      return collapse_whitespace(s.str());
-    }
-
-    /// The pattern of ParameterHandler::set's "The string <v> does not match the given pattern <p>."
-    /// (the value may hold anything: the last marker counts), or nothing for another error.
-    std::optional<std::string> mismatched_pattern(const dealii::ExceptionBase &e)
-    {
-      const std::string info = info_of(e), mark = "> does not match the given pattern <";
-      const auto p = info.rfind(mark);
-      if (p == std::string::npos || info.size() < p + mark.size() + 2)
-        return std::nullopt;
-      return info.substr(p + mark.size(), info.size() - p - mark.size() - 2); // without the closing ">."
-    }
 
     /// The text between `open' and the next `close' after `from' (npos if absent).
     std::optional<std::string> between(const std::string &s, const std::string &open, const std::string &close,
@@ -64,128 +43,6 @@ namespace servodrift
       if (b == std::string::npos)
         return std::nullopt;
       return s.substr(a + open.size(), b - a - open.size());
-    }
-
-    // ---- moved entries -------------------------------------------------------------------------------
-    /// Prints a warning on rank 0, each distinct one once per process (a run reads its description
-    /// more than once)
-    void warn_once(const std::string &line)
-    {
-      static std::mutex mutex;
-      static std::set<std::string> printed;
-      const std::lock_guard<std::mutex> lock(mutex);
-      if (mpi_rank() == 0 && printed.insert(line).second)
-        std::cerr << line << std::endl;
-    }
-
-    /// Sets `value' at `path' ("A/B/Key", from the handler's top level). Returns the allowed
-    /// pattern if deal.II refuses the value.
-    std::optional<std::string> set_at_path(ParameterHandler &prm, const std::string &path, const std::string &value)
-    {
-      std::vector<std::string> sections;
-      std::string key = path;
-      for (std::size_t slash; (slash = key.find('/')) != std::string::npos; key = key.substr(slash + 1))
-        sections.push_back(key.substr(0, slash));
-      for (const auto &section : sections)
-        prm.enter_subsection(section);
-      std::optional<std::string> refused;
-      try
-        {
-          prm.set(key, value);
-        }
-      catch (const dealii::ExceptionBase &e)
-        {
-          refused = mismatched_pattern(e).value_or("see `servodrift params'");
-        }
-      for (std::size_t k = 0; k < sections.size(); ++k)
-        prm.leave_subsection();
-      return refused;
-    }
-
-    /// The values a parameter file sets under moved entries' old paths: taken out while the file is
-    /// read, set at their new paths afterwards, each with its deprecation warning.
-    class MovedEntries
-    {
-    public:
-      /// `path' set in the file; true (and the value kept) if it is a moved entry's old path
-      bool take(const std::string &path, const std::string &value, const std::string &where)
-      {
-        const RenamedEntry *entry = renamed_entry(path);
-        if (entry == nullptr)
-          {
-            set_paths.insert(path);
-            return false;
-          }
-        values.push_back({entry, value, where});
-        return true;
-      }
-
-      /// Sets the values taken at their new paths. Throws InputError if the file also sets the new
-      /// path (one entry set twice under two names) or deal.II refuses the value.
-      void apply(ParameterHandler &prm) const
-      {
-        for (const auto &[entry, value, where] : values)
-          {
-            if (set_paths.count(entry->new_path) != 0)
-              throw InputError(where + ": `" + entry->old_path + "' is the old name of `" + entry->new_path +
-                               "', which the file sets too; keep one");
-            if (const auto pattern = set_at_path(prm, entry->new_path, value))
-              throw InputError(where + ": `" + entry->old_path + "' (now `" + entry->new_path + "') = " +
-                               shown_input(value) + " is not allowed; allowed: " + *pattern);
-            warn_once(deprecation_warning(where, *entry));
-          }
-      }
-
-    private:
-      struct Value
-      {
-        const RenamedEntry *entry;
-        std::string value, where;
-      };
-      std::vector<Value> values;
-      std::set<std::string> set_paths;
-    };
-
-    /// The PRM text with every `set' of a moved entry blanked (its lines kept, so that deal.II's
-    /// line numbers stay the file's), the values taken by `moved'.
-    std::string without_moved_entries(const std::string &text, const std::string &file, MovedEntries &moved)
-    {
-      std::vector<std::string> lines;
-      std::istringstream in(text);
-      for (std::string line; std::getline(in, line);)
-        lines.push_back(line);
-      std::vector<std::string> path;
-      for (std::size_t k = 0; k < lines.size();)
-        {
-          const std::size_t first = k;
-          std::string logical; // a line and the lines its trailing backslashes continue it with
-          for (bool continued = true; continued && k < lines.size(); ++k)
-            {
-              std::string line = lines[k];
-              const auto last = line.find_last_not_of(" \t\r");
-              continued = last != std::string::npos && line[last] == '\\';
-              logical += continued ? line.substr(0, last) : line;
-            }
-          const std::string statement = collapse_whitespace(logical.substr(0, logical.find('#')));
-          if (statement.rfind("subsection ", 0) == 0)
-            path.push_back(statement.substr(11));
-          else if (statement == "end" && !path.empty())
-            path.pop_back();
-          else if (statement.rfind("set ", 0) == 0 && statement.find('=') != std::string::npos)
-            {
-              const auto eq = statement.find('=');
-              const std::string key = collapse_whitespace(statement.substr(4, eq - 4));
-              const std::string value = collapse_whitespace(statement.substr(eq + 1));
-              const std::string where = file + ":" + std::to_string(first + 1);
-              if (moved.take(joined(path) + "/" + key, value, where))
-                for (std::size_t j = first; j < k; ++j)
-                  lines[j].clear();
-            }
-        }
-      std::string out;
-      for (const auto &line : lines)
-        out += line + "\n";
-      return out;
     }
 
     // ---- files ------------------------------------------------------------------------------------
@@ -247,7 +104,7 @@ namespace servodrift
     std::string describe_parse_error(const std::string &file, const std::string &text, const ParameterHandler &prm,
                                      const dealii::ExceptionBase &e)
     {
-      const std::string info = info_of(e);
+      const std::string info = exception_text(e);
       // "Line <N> of file <F>: ..." (ExcNoSubsection omits the '>')
       const auto number = between(info, "Line <", ">");
       const auto file_start = info.find("of file <");
@@ -487,15 +344,6 @@ namespace servodrift
     }
 
   } // namespace
-
-  std::string current_entry_path(const std::string &path, const std::string &where)
-  {
-    const RenamedEntry *moved = renamed_entry(path);
-    if (moved == nullptr)
-      return path;
-    warn_once(deprecation_warning(where, *moved));
-    return moved->new_path;
-  }
 
   void read_parameters(ParameterHandler &prm, const std::string &input_file, const std::vector<std::string> &overrides)
   {

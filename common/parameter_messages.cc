@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "common/parameter_input.h"
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <boost/property_tree/json_parser.hpp>
@@ -157,5 +158,21 @@ namespace servodrift
   void check_numbers(const ParameterHandler &prm)
   {
     check_numbers(declarations(prm), "");
+  }
+
+  std::string exception_text(const dealii::ExceptionBase &e)
+  {
+    std::ostringstream s;
+    e.print_info(s);
+    return collapse_whitespace(s.str());
+  }
+
+  std::optional<std::string> mismatched_pattern(const dealii::ExceptionBase &e)
+  {
+    const std::string info = exception_text(e), mark = "> does not match the given pattern <";
+    const auto p = info.rfind(mark);
+    if (p == std::string::npos || info.size() < p + mark.size() + 2)
+      return std::nullopt;
+    return info.substr(p + mark.size(), info.size() - p - mark.size() - 2); // without the closing ">."
   }
 } // namespace servodrift

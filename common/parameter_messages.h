@@ -1,13 +1,15 @@
 #pragma once
 // What the reading of a valve description (common/parameter_input.cc) says about the declared
 // entries: their names for "did you mean", and a check that every number converts.
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace dealii
 {
+  class ExceptionBase;
   class ParameterHandler;
-}
+} // namespace dealii
 
 namespace servodrift
 {
@@ -18,6 +20,11 @@ namespace servodrift
   std::string suggestion(const std::string &given, const std::vector<std::string> &names);
   /// "A/B/C"
   std::string joined(const std::vector<std::string> &path);
+  /// A deal.II exception's text, its whitespace runs as one space.
+  std::string exception_text(const dealii::ExceptionBase &e);
+  /// The pattern of ParameterHandler::set's "The string <v> does not match the given pattern <p>."
+  /// (the value may hold anything: the last marker counts), or nothing for another error.
+  std::optional<std::string> mismatched_pattern(const dealii::ExceptionBase &e);
   /// Every number of every Double entry converts to a finite, normal double (deal.II's pattern
   /// accepts a subnormal such as 1e-310; its conversion then fails with a raw exception). Throws
   /// InputError naming the entry.
