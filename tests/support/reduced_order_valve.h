@@ -20,6 +20,10 @@ namespace servodrift::test
     system::ValveDynamics dynamics(double T, system::HeldParts held = {}, const system::Offsets &offsets = {}) const;
   };
 
+  /// The valve of `overrides', made once per test program and shared by the tests that ask for
+  /// the same overrides (its tables take seconds to make)
+  const ReducedOrderValve &shared_reduced_order_valve(const std::vector<std::string> &overrides = {});
+
   /// The largest |F_k|/(scale_k w_ref) of a state under a command: how far it is from rest, in each
   /// state's scale per armature time unit (w_ref = sqrt(K_a/J_a)).
   double scaled_rates(const system::ValveDynamics &d, const system::ValveState &s, double command);

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 
 namespace servodrift::test
 {
@@ -33,6 +35,15 @@ namespace servodrift::test
     structure::run(v);
     flow::run(v);
     return tables_directory(v);
+  }
+
+  const ReducedOrderValve &shared_reduced_order_valve(const std::vector<std::string> &overrides)
+  {
+    static std::map<std::vector<std::string>, std::unique_ptr<ReducedOrderValve>> made;
+    auto &valve = made[overrides];
+    if (!valve)
+      valve = std::make_unique<ReducedOrderValve>(overrides);
+    return *valve;
   }
 
   ReducedOrderValve::ReducedOrderValve(const std::vector<std::string> &overrides)

@@ -27,11 +27,7 @@ namespace
 
   const std::vector<std::string> few_temperatures = {"Sweeps/Drift temperatures=40, 80, 120"};
 
-  const Valve &rv1()
-  {
-    static const Valve v(few_temperatures);
-    return v;
-  }
+  const Valve &rv1() { return test::shared_reduced_order_valve(few_temperatures); }
 
   /// A build with every kind of left/right deviation and offset.
   Offsets lopsided()

@@ -33,11 +33,7 @@ namespace
 {
   using Valve = test::ReducedOrderValve;
 
-  const Valve &rv1()
-  {
-    static const Valve v;
-    return v;
-  }
+  const Valve &rv1() { return test::shared_reduced_order_valve(); }
 
   constexpr double rated = 0.02, bias = 0.01;
 } // namespace

@@ -23,11 +23,7 @@ namespace
 
   const std::vector<std::string> few_temperatures = {"Sweeps/Drift temperatures=40, 80, 120"};
 
-  const Valve &rv1()
-  {
-    static const Valve v(few_temperatures);
-    return v;
-  }
+  const Valve &rv1() { return test::shared_reduced_order_valve(few_temperatures); }
 
   ToleranceParameters uniform_inputs(std::size_t n, double half_width, unsigned int base_samples)
   {
