@@ -12,6 +12,7 @@
 #include "magnetics/torque_motor_field.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -69,22 +70,65 @@ namespace servodrift::magnetics
       return false;
     }
 
-    constexpr std::size_t summary_length = 9; // a summary row; table rows have 6 entries
+    constexpr std::size_t summary_length = 10; // a summary row; table rows have 6 entries
+
+    /// Which grid cases a temperature's field sweep solves, and which it takes from their mirror image.
+    /// The motor is symmetric about its centre plane x = 0: the mesh is its right half mirrored, the
+    /// magnets' field is odd in x and the coils' even (method.md, torque motor, field level). The
+    /// mirror image of the case (theta, i) is therefore the case (-theta, -i) with every torque
+    /// negated, T(-theta, -i) = -T(theta, i), by both methods: where the grid holds both, one is
+    /// solved, the one with theta > 0 (or theta = 0 and i > 0), and the other mirrored. A case whose
+    /// field is written to a VTU file is always solved.
+    struct MirrorPlan
+    {
+      static constexpr std::size_t solved = std::size_t(-1);
+      std::vector<std::size_t> image_of; ///< per case a * n_i + c: the solved case it mirrors, or `solved'
+      std::size_t n_solved = 0;
+    };
+
+    MirrorPlan mirror_plan(const ValveDescription &valve, double T)
+    {
+      const auto &angles = valve.sweeps.motor_angles, &currents = valve.sweeps.motor_currents;
+      const std::size_t n_a = angles.size(), n_i = currents.size();
+      const auto index_of = [](const std::vector<double> &grid, double x) {
+        // the grids hold values as parsed: a mirrored entry is the exact negative of its partner
+        const auto it = std::find(grid.begin(), grid.end(), -x);
+        return it == grid.end() ? MirrorPlan::solved : std::size_t(it - grid.begin());
+      };
+      MirrorPlan plan;
+      plan.image_of.assign(n_a * n_i, MirrorPlan::solved);
+      for (std::size_t a = 0; a < n_a; ++a)
+        for (std::size_t c = 0; c < n_i; ++c)
+          {
+            const double theta = angles[a], i = currents[c];
+            const bool mirrored_half = theta < 0 || (theta == 0 && i < 0);
+            const std::size_t a_m = index_of(angles, theta), c_m = index_of(currents, i);
+            if (mirrored_half && a_m != MirrorPlan::solved && c_m != MirrorPlan::solved && !wanted(valve, T, theta, i))
+              plan.image_of[a * n_i + c] = a_m * n_i + c_m;
+            else
+              ++plan.n_solved;
+          }
+      return plan;
+    }
 
     /// One temperature of the field sweep: every angle and current on one mesh, each solve starting
-    /// from its neighbour's solution (currents outer, angles back and forth).
+    /// from its neighbour's solution (currents outer, angles back and forth); the mirror images of
+    /// solved cases are not solved again (MirrorPlan).
     CaseRows field_case(const ValveDescription &valve, double T)
     {
       const auto start = std::chrono::steady_clock::now();
       const auto &sw = valve.sweeps;
       TorqueMotorFieldModel model(valve, T);
       const std::size_t n_a = sw.motor_angles.size(), n_i = sw.motor_currents.size();
+      const MirrorPlan plan = mirror_plan(valve, T);
       double newton = 0, gap_flux = std::nan(""), armature_flux = std::nan("");
-      std::vector<std::vector<double>> raw(n_a * n_i);
+      std::vector<std::array<double, 2>> raw(n_a * n_i);
       for (std::size_t c = 0; c < n_i; ++c)
         for (std::size_t k = 0; k < n_a; ++k)
           {
             const std::size_t a = c % 2 ? n_a - 1 - k : k;
+            if (plan.image_of[a * n_i + c] != MirrorPlan::solved)
+              continue;
             const double theta = sw.motor_angles[a], i = sw.motor_currents[c];
             const FieldTorque t = model.torque(theta, i, true);
             newton += t.newton.iterations;
@@ -101,6 +145,9 @@ namespace servodrift::magnetics
                 model.problem().write_vtu(dir + "/" + field_file_name(T, theta, i));
               }
           }
+      for (std::size_t k = 0; k < n_a * n_i; ++k)
+        if (plan.image_of[k] != MirrorPlan::solved)
+          raw[k] = {-raw[plan.image_of[k]][0], -raw[plan.image_of[k]][1]};
       // secant K_m of the field (C1) for the paper preset's E25 correction
       double secant = 0;
       if (valve.torque_motor.paper_magnetic_spring)
@@ -120,7 +167,7 @@ namespace servodrift::magnetics
           }
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       rows.push_back({T, double(model.n_dofs()), double(model.problem().n_cells()), gap_flux, armature_flux, newton,
-                      double(n_a * n_i), seconds, 0.0});
+                      double(n_a * n_i), double(plan.n_solved), seconds, 0.0});
       return rows;
     }
 
@@ -129,14 +176,16 @@ namespace servodrift::magnetics
       CsvDocument doc;
       doc.comments = {"servodrift-output magnetics_field_summary",
                       "field-level torque motor per temperature: mesh size, working-gap flux density and largest "
-                      "armature flux density at theta = 0, i = 0, Newton iterations (with chord steps) and time",
+                      "armature flux density at theta = 0, i = 0, Newton iterations (with chord steps), the table's cases "
+                      "and those solved (the others are mirror images: T(-theta, -i) = -T(theta, i)) and time",
                       "producer " + producer_string("magnetics/field"), "parameters-sha256 " + valve.parameters_sha256};
       doc.columns = {"temperature[degC]", "unknowns[1]", "cells[1]", "mean_gap_flux_density[T]",
-                     "max_armature_flux_density[T]", "newton_iterations[1]", "cases[1]", "wall_time[s]"};
+                     "max_armature_flux_density[T]", "newton_iterations[1]", "cases[1]", "solved_cases[1]",
+                     "wall_time[s]"};
       for (const auto &r : summary)
         doc.rows.push_back({format_cell(r[0]), format_cell(r[1]), format_cell(r[2]),
                             std::isfinite(r[3]) ? format_cell(r[3]) : "", std::isfinite(r[4]) ? format_cell(r[4]) : "",
-                            format_cell(r[5]), format_cell(r[6]), format_cell(r[7])});
+                            format_cell(r[5]), format_cell(r[6]), format_cell(r[7]), format_cell(r[8])});
       const std::string dir = valve.output.directory + "/magnetics";
       prepare_output_directory(dir);
       write_file_atomically(dir + "/field_summary.csv", doc.text());

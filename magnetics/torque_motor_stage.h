@@ -7,7 +7,8 @@
 namespace servodrift::magnetics
 {
   /// Every MPI rank returns the whole table (the cases are shared over the ranks). At the field
-  /// level, VTU files of the cases chosen by `Output/Magnetics fields' and magnetics/field_summary.csv
+  /// level, the mirror image (-theta, -i) of a solved case is not solved again (T(-theta, -i) =
+  /// -T(theta, i) on the mirrored mesh), and VTU files of the cases chosen by `Output/Magnetics fields' and magnetics/field_summary.csv
   /// are written too.
   Table compute_torque_motor_table(const ValveDescription &valve);
 

@@ -1,5 +1,6 @@
 // The field-level magnetostatics (deal.II A_z) against closed forms, symmetry, the circuit (model.md
 // 2.2, C10) and the paper's temperature trend; Newton in saturation; bad geometry.
+#include "common/csv.h"
 #include "common/error.h"
 #include "common/fitting.h"
 #include "common/output_files.h"
@@ -8,6 +9,7 @@
 #include "magnetics/magnetostatic_problem.h"
 #include "common/torque_motor_circuit.h"
 #include "magnetics/torque_motor_field.h"
+#include "magnetics/torque_motor_stage.h"
 #include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 
@@ -154,6 +156,49 @@ TEST(TorqueMotorField, RV1SymmetryMethodsAndCircuit)
   // the calibration target, on this coarse mesh
   EXPECT_CHECK_RELATIVE("mean gap flux density at null, 40 degC, coarse mesh [T]", model.mean_gap_flux_density(),
                         0.5495, 0.02, "circuit, C10 target");
+}
+
+TEST(TorqueMotorField, StageMirrorsHalfItsCasesAsTheySolve)
+{
+  // The stage solves one of each pair (theta, i), (-theta, -i) of its grid and negates the torques
+  // for the other (T(-theta, -i) = -T(theta, i) on the mirrored mesh). Each mirrored entry against
+  // a direct solve at its own angle and current: the torque within 1e-8 of the table's largest
+  // (the solves stop at 1e-10 of the residual; two start paths differ by 2e-10 on RV-1's mesh),
+  // the methods' difference within 2e-3 of its largest (the virtual work's difference quotient over
+  // +-0.01 deg amplifies the solves' stopping error; measured 1.8e-4 between two start paths).
+  auto v = coarse_rv1({"Torque motor/Model level=field", "Dynamics/Enabled=false",
+                       "Sweeps/Motor angles=-0.15,-0.1,0,0.1,0.15",
+                       "Sweeps/Motor currents=-0.03,0,0.03"});
+  v.sweeps.table_temperatures = {40.0}; // one temperature's sweep (a file must give the drift map two)
+  const Table table = compute_torque_motor_table(v);
+  ASSERT_EQ(table.rows.size(), 15u);
+  double largest = 0, largest_error = 0;
+  for (const auto &r : table.rows)
+    largest = std::max(largest, std::abs(r[3])), largest_error = std::max(largest_error, std::abs(r[4]));
+  TorqueMotorFieldModel model(v, 40);
+  double torque_difference = 0, error_difference = 0;
+  unsigned int mirrored = 0;
+  for (const auto &r : table.rows)
+    {
+      const double theta = r[1], i = r[2];
+      if (!(theta < 0 || (theta == 0 && i < 0)))
+        continue;
+      ++mirrored;
+      const FieldTorque direct = model.torque(theta, i);
+      torque_difference = std::max(torque_difference, std::abs(r[3] - direct.stress_tensor) / largest);
+      error_difference =
+        std::max(error_difference, std::abs(r[4] - (direct.virtual_work - direct.stress_tensor)) / largest_error);
+    }
+  EXPECT_EQ(mirrored, 7u);
+  // ... and the stage solved the other eight only
+  const CsvDocument summary = CsvDocument::parse(read_file(v.output.directory + "/magnetics/field_summary.csv"));
+  ASSERT_EQ(summary.rows.size(), 1u);
+  EXPECT_EQ(summary.rows[0][summary.column("cases[1]")], "15");
+  EXPECT_EQ(summary.rows[0][summary.column("solved_cases[1]")], "8");
+  EXPECT_CHECK_AT_MOST("mirrored torque against a direct solve, 7 cases: largest difference / largest torque",
+                       torque_difference, 1e-8, "T(-theta, -i) = -T(theta, i)");
+  EXPECT_CHECK_AT_MOST("mirrored methods' difference against a direct solve: largest difference / its largest",
+                       error_difference, 2e-3, "T(-theta, -i) = -T(theta, i)");
 }
 
 TEST(TorqueMotorField, TorqueIsSmoothInTheAngleAtHundredthDegreeSteps)
