@@ -22,8 +22,8 @@ namespace servodrift::magnetics
 
   private:
     double J_s, chi0, c; // c = pi chi0 mu0/(2 J_s)
-    /// Inverse table: H_k (geometric), B_k = B(H_k) and dH/dB at B_k, for a cubic Hermite start of
-    /// one Newton correction.
+    /// Inverse table: H_k (geometric, ratio 1.002), B_k = B(H_k) and dH/dB at B_k, whose cubic
+    /// Hermite interpolant is H(B) to 1e-12.
     std::vector<double> table_B, table_H, table_dHdB;
   };
 } // namespace servodrift::magnetics

@@ -102,14 +102,15 @@ namespace servodrift::magnetics
     std::swap(d.cell_geometry, d.kept_cell_geometry);
     const auto velocity0 = d.velocity;
     const std::vector<Point<2>> vertices0 = d.triangulation.get_vertices();
-    // Each solve starts from a first-order prediction: +step from the tangent that the last position
-    // left at this current (if any), -step by reflecting the +step solution through A0. The two
-    // solutions then give the tangent at s0 for the next position's solve.
+    // Each solve starts from a prediction: +step to first order from the tangent that the last
+    // position left at this current (if any), carried to s0 by its second derivative; -step by
+    // reflecting the +step solution through A0. The three solutions then give dA/ds and d2A/ds2 at
+    // s0 for the next position's solve.
     const bool tangent_known = d.tangent.known && d.tangent.current == current;
     d.move_to(s0 + step);
     d.solution = A0;
-    if (tangent_known)
-      d.solution.add(step, d.tangent.dA_ds);
+    if (tangent_known) // dA/ds at s0 from the last position's dA/ds and d2A/ds2
+      d.solution.add(step, d.tangent.dA_ds, step * (s0 - d.tangent.position), d.tangent.d2A_ds2);
     d.solve(current, d.tolerance, 50);
     const double W_plus = coenergy();
     const Vector<double> A_plus = d.solution;
@@ -120,6 +121,9 @@ namespace servodrift::magnetics
     d.tangent.dA_ds = A_plus;
     d.tangent.dA_ds.add(-1, d.solution);
     d.tangent.dA_ds /= 2 * step;
+    d.tangent.d2A_ds2 = A_plus;
+    d.tangent.d2A_ds2.add(-2, A0, 1, d.solution);
+    d.tangent.d2A_ds2 /= step * step;
     d.tangent.A = A0;
     d.tangent.position = s0, d.tangent.current = current, d.tangent.known = true;
     for (const auto &cell : d.triangulation.active_cell_iterators())

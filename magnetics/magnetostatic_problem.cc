@@ -290,13 +290,16 @@ namespace servodrift::magnetics
   NewtonStatistics MagnetostaticProblem::solve(double current, double tolerance, unsigned int max_iterations)
   {
     // In a sweep over positions the solution before the move is a zeroth-order start; where virtual
-    // work left dA/ds at this current, the first-order one. RV-1's sweep: the starting residual
-    // 1.8e-2 -> 7e-4 of ||R(0)||, 13 % fewer chord and Newton steps (doc/performance.md).
+    // work left dA/ds and d2A/ds2 at this current, the second-order one (Taylor). RV-1's sweep: the
+    // starting residual 1.8e-2 of ||R(0)|| from the solution before, 7e-4 to first order, 2e-5 to
+    // second order; the chord steps then contract some 20x each on the older factorisation, so the
+    // second order saves one step in ten (doc/changes.md, issue 63: the torque motor).
     auto &d = *impl;
     if (d.tangent.known && d.tangent.current == current && d.tangent.position != d.s)
       {
+        const double ds = d.s - d.tangent.position;
         d.solution = d.tangent.A;
-        d.solution.add(d.s - d.tangent.position, d.tangent.dA_ds);
+        d.solution.add(ds, d.tangent.dA_ds, 0.5 * ds * ds, d.tangent.d2A_ds2);
       }
     return impl->solve(current, tolerance, max_iterations);
   }

@@ -78,7 +78,7 @@ namespace servodrift::magnetics
 
     /// Solves at excitation current `current' [A] (coil current densities scale with it), starting
     /// from the last solution, or, where virtual work at another position and this current left the
-    /// derivative dA/ds, from its first-order prediction at this position. Chord steps on the last
+    /// derivatives dA/ds and d2A/ds2, from their prediction at this position. Chord steps on the last
     /// factorisation, then Newton with backtracking line search until ||R|| <= tolerance ||R(0)||.
     NewtonStatistics solve(double current, double tolerance = 1e-10, unsigned int max_iterations = 50);
 

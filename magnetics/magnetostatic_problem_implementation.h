@@ -93,14 +93,15 @@ namespace servodrift::magnetics
     FullMatrix<double> shape_values; ///< [q][i] on the reference cell
     void update_cell_geometry();
     std::map<double, double> source_norm;  ///< ||R(A = 0)|| per current: the scale of the tolerance
-    /// The solution's derivative in the position at one position and current, dA/ds, from virtual
-    /// work's central difference: a solve at another position and the same current starts from the
-    /// first-order prediction A + (s - position) dA/ds instead of A (MagnetostaticProblem::solve).
+    /// The solution's derivatives in the position at one position and current, dA/ds and d2A/ds2,
+    /// from virtual work's central differences: a solve at another position and the same current
+    /// starts from the second-order prediction A + ds dA/ds + ds^2/2 d2A/ds2 instead of A
+    /// (MagnetostaticProblem::solve).
     struct Tangent
     {
       bool known = false;
       double position = 0, current = 0;
-      Vector<double> A, dA_ds;
+      Vector<double> A, dA_ds, d2A_ds2;
     } tangent;
 
     // morphing: vertex displacement (Q1) extended into the morphing air by a Laplace solve
@@ -111,6 +112,7 @@ namespace servodrift::magnetics
     std::vector<bool> moving_dof;
     EigenMatrix K_ff, K_fd;
     Cholesky morph_cholesky;
+    Eigen::MatrixXd extended_motion_fields;  ///< F1, F2 extended into the morphing air (motion_fields)
     std::array<Vector<double>, 2> velocity; ///< virtual velocity of the body, extended (for the MST)
 
     Implementation(const PlanarMesh &mesh, const std::map<int, Material> &materials, const Motion &motion,
@@ -123,8 +125,11 @@ namespace servodrift::magnetics
 
     void setup_system();
     void setup_morphing();
-    std::array<double, 2> body_displacement(const Point<2> &x, double position) const;
-    std::array<double, 2> body_velocity(const Point<2> &x_now) const;
+    /// The two fields F1, F2 on the body's DoFs (columns x, y of each; zero elsewhere) whose
+    /// combinations are the motion's displacement and virtual velocity at every position.
+    Eigen::MatrixXd motion_fields() const;
+    /// (a_u, b_u, a_w, b_w) of displacement u = a_u F1 + b_u F2 and velocity w = a_w F1 + b_w F2.
+    std::array<double, 4> motion_coefficients(double position) const;
     /// The Laplace extension of fields given at the fixed DoFs (columns of `boundary', rows the
     /// morph DoFs; its free rows are ignored) into the morphing air: one solve for every column.
     Eigen::MatrixXd extend(const Eigen::MatrixXd &boundary) const;

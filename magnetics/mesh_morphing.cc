@@ -1,6 +1,9 @@
 // The moving body by mesh morphing (model.md 4.1): its vertices move rigidly, the morphing air's
 // follow a Laplace extension of that motion, assembled and factorised once per mesh; the body's
-// virtual velocity is extended the same way, for the weighted Maxwell stress tensor.
+// virtual velocity is extended the same way, for the weighted Maxwell stress tensor. A rigid
+// motion's displacement and velocity are combinations of two fixed fields on the body (rotation: r
+// and e_z x r) and the extension is linear, so the two are extended once per mesh and every
+// position is their combination.
 #include "magnetics/magnetostatic_problem_implementation.h"
 
 #include <deal.II/fe/fe_values.h>
@@ -84,23 +87,37 @@ namespace servodrift::magnetics
         morph_cholesky.compute(K_ff);
         check(morph_cholesky, "the mesh-morphing factorisation");
       }
+    extended_motion_fields = extend(motion_fields());
     move_to(0.0); // sizes the virtual velocity too
   }
 
-  std::array<double, 2> MagnetostaticProblem::Implementation::body_displacement(const Point<2> &x, double position) const
+  Eigen::MatrixXd MagnetostaticProblem::Implementation::motion_fields() const
   {
-    if (motion.kind == Motion::Kind::translation)
-      return {position * motion.direction[0], position * motion.direction[1]};
-    const double c = std::cos(position), sn = std::sin(position);
-    const double dx = x[0] - motion.point[0], dy = x[1] - motion.point[1];
-    return {motion.point[0] + c * dx - sn * dy - x[0], motion.point[1] + sn * dx + c * dy - x[1]};
+    // rotation about p: F1 = r = x - p and F2 = e_z x r; translation: F1 = d, F2 = 0
+    const unsigned int n = morph_dof_handler.n_dofs();
+    Eigen::MatrixXd fields = Eigen::MatrixXd::Zero(n, 4);
+    for (unsigned int d = 0; d < n; ++d)
+      if (moving_dof[d])
+        {
+          if (motion.kind == Motion::Kind::translation)
+            {
+              fields.row(d) << motion.direction[0], motion.direction[1], 0, 0;
+              continue;
+            }
+          const Point<2> &x = reference_vertices[vertex_of_dof[d]];
+          const double rx = x[0] - motion.point[0], ry = x[1] - motion.point[1];
+          fields.row(d) << rx, ry, -ry, rx;
+        }
+    return fields;
   }
 
-  std::array<double, 2> MagnetostaticProblem::Implementation::body_velocity(const Point<2> &x_now) const
+  std::array<double, 4> MagnetostaticProblem::Implementation::motion_coefficients(double position) const
   {
     if (motion.kind == Motion::Kind::translation)
-      return motion.direction;
-    return {-(x_now[1] - motion.point[1]), x_now[0] - motion.point[0]}; // e_z x (x - pivot)
+      return {position, 0, 1, 0}; // u = s d, w = d
+    // u = R(s) r - r = (cos s - 1) r + sin s (e_z x r); w = e_z x R(s) r = -sin s r + cos s (e_z x r)
+    const double c = std::cos(position), sn = std::sin(position);
+    return {c - 1, sn, -sn, c};
   }
 
   Eigen::MatrixXd MagnetostaticProblem::Implementation::extend(const Eigen::MatrixXd &boundary) const
@@ -128,19 +145,14 @@ namespace servodrift::magnetics
 
   void MagnetostaticProblem::Implementation::move_to(double position)
   {
-    // the body's displacement (columns 0, 1) and its virtual velocity at the new position (2, 3, for
-    // the MST), both extended into the air by one solve
+    // the body's displacement u and its virtual velocity w at the new position (for the MST), both
+    // extended into the air: combinations of the two extended motion fields
     const unsigned int n = morph_dof_handler.n_dofs();
-    Eigen::MatrixXd boundary = Eigen::MatrixXd::Zero(n, 4);
-    for (unsigned int d = 0; d < n; ++d)
-      if (moving_dof[d])
-        {
-          const Point<2> &x = reference_vertices[vertex_of_dof[d]];
-          const auto u = body_displacement(x, position);
-          const auto w = body_velocity(x + Point<2>(u[0], u[1]));
-          boundary.row(d) << u[0], u[1], w[0], w[1];
-        }
-    const Eigen::MatrixXd extended = extend(boundary);
+    const auto [a_u, b_u, a_w, b_w] = motion_coefficients(position);
+    const Eigen::MatrixXd &F = extended_motion_fields;
+    Eigen::MatrixXd extended(n, 4);
+    extended.leftCols(2) = a_u * F.leftCols(2) + b_u * F.rightCols(2);
+    extended.rightCols(2) = a_w * F.leftCols(2) + b_w * F.rightCols(2);
 
     std::vector<Point<2>> moved(reference_vertices.size());
     for (unsigned int d = 0; d < n; ++d)
@@ -180,10 +192,16 @@ namespace servodrift::magnetics
   {
     FEValues<2> fe_values(fe, quadrature, update_gradients | update_JxW_values);
     const unsigned int dofs_per_cell = fe.n_dofs_per_cell(), n_q = quadrature.size();
+    // The solids that stay never change: a buffer filled whole once (virtual work swaps in its own
+    // at its first use) keeps their entries, and only the moving body and the morphing air are redone.
+    const bool whole = cell_geometry.JxW.size() != triangulation.n_active_cells() * n_q;
     cell_geometry.JxW.resize(triangulation.n_active_cells() * n_q);
     cell_geometry.shape_gradients.resize(triangulation.n_active_cells() * n_q * dofs_per_cell);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        const Material &m = *cell_material[cell->active_cell_index()];
+        if (!whole && !m.moving && !m.morphing)
+          continue;
         fe_values.reinit(cell);
         const std::size_t first_q = cell->active_cell_index() * n_q;
         for (unsigned int q = 0; q < n_q; ++q)
