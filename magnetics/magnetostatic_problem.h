@@ -84,10 +84,13 @@ namespace servodrift::magnetics
 
     /// Weighted Maxwell stress tensor: torque [N*m] (rotation) or force [N] (translation) on the body.
     double stress_tensor_force() const;
-    /// Coenergy W' = w_d int int_0^H B dH' dA [J].
+    /// Coenergy W' = w_d int int_0^H B dH' dA [J] of the last solve, as w_d (int J A - int w(B)),
+    /// which equals it at the solution and is stationary there: its error is quadratic in the
+    /// solution's.
     double coenergy() const;
-    /// dW'/ds at constant current by central differences over +-step; position and solution are
-    /// restored afterwards, and dA/ds is kept for the next solve at another position.
+    /// dW'/ds at constant current by central differences over +-step, the solves there stopped at
+    /// 1e3 x the tolerance; position and solution are restored afterwards, and dA/ds and d2A/ds2 are
+    /// kept for the next solve at another position.
     double virtual_work_force(double step);
 
     /// Mean of B along `component' (0: x, 1: y) over the cells of a material [T].
