@@ -2,8 +2,8 @@
 // resolution from scratch (meshing, set-up, cold Newton, both torque methods) and warm (as inside a
 // sweep), with unknowns, Newton iterations and time per case. Not a test.
 //   OMP_THREAD_LIMIT=1 build/bench/bench_magnetics [repetitions]
-// The default sweep (9 x 9 x 5 cases) is timed with the command itself:
-//   time mpirun -np 2 build/servodrift magnetics -o /tmp/bench
+// The default sweep (12 temperatures x 9 angles x 7 currents) is timed with the command itself, by
+// scripts/run-benchmarks: mpirun -np 2 build/servodrift magnetics -o /tmp/bench
 #include "bench/benchmarks.h"
 #include "bench/figures.h"
 #include "common/units.h"
