@@ -54,9 +54,10 @@ namespace servodrift::magnetics
         return (2 * t3 - 3 * t2 + 1) * table_H[k - 1] + (t3 - 2 * t2 + t) * h * table_dHdB[k - 1] +
                (-2 * t3 + 3 * t2) * table_H[k] + (t3 - t2) * h * table_dHdB[k];
       }
-    // Outside the table (below B(1e-3 A/m), 2.5e-5 T for 1J50, or in deep saturation) by Newton's method. B(H) is
-    // increasing and concave for H >= 0, so it lies below its tangents: from any start, the first
-    // Newton step lands at or below the root and the following ones climb to it monotonically.
+    // Outside the table (below B(1e-3 A/m), 2.5e-5 T for 1J50, or in deep saturation) by Newton's
+    // method. B(H) is increasing and concave for H >= 0, so it lies below its tangents: from any
+    // start, the first Newton step lands at or below the root and the following ones climb to it
+    // monotonically.
     double H = it == table_B.begin() ? B / (mu0 * (1 + chi0)) // below the table: the initial slope
                                      : (B - J_s) / mu0;         // beyond it: B <= mu0 H + J_s
     for (int k = 0; k < 100; ++k)

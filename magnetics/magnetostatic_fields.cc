@@ -56,7 +56,7 @@ namespace servodrift::magnetics
     // W' = w_d int w'(H) dA equals w_d (int J A dA - int w(B) dA) at the solution (the weak form with
     // the solution as test function gives int H . B = int J A, and w' = B . H - w), and the latter is
     // minus the energy functional whose stationary point the solution is: its error is quadratic in
-    // the solution's, so virtual work's solves may stop at the square root of the tolerance.
+    // the solution's, so virtual work's solves may stop well short of the tolerance.
     const auto &d = *impl;
     const unsigned int dofs_per_cell = d.fe.n_dofs_per_cell(), n_q = d.quadrature.size();
     double W = 0;
