@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <stdexcept>
+#include <string>
 
 namespace servodrift::system
 {
@@ -111,10 +113,13 @@ namespace servodrift::system
     eq.forget_table_excursions();
     // half the samples over the whole step, half over its first 10 ms, where the armature moves
     const double early = std::min(r.duration, 0.01);
+    // (the fraction first: it is exactly 1 at the last sample, so that the last time is the
+    // duration itself and not one rounding beyond the integration's end, where it is never sampled)
     for (unsigned int k = 0; k < samples / 2; ++k)
       {
-        r.times.push_back(r.duration * k / (samples / 2 - 1));
-        r.times.push_back(early * k / (samples / 2 - 1));
+        const double fraction = double(k) / (samples / 2 - 1);
+        r.times.push_back(r.duration * fraction);
+        r.times.push_back(early * fraction);
       }
     std::sort(r.times.begin(), r.times.end());
     r.times.erase(std::unique(r.times.begin(), r.times.end()), r.times.end());
@@ -134,6 +139,9 @@ namespace servodrift::system
       r.spool_on_stop |= std::abs(y[4]) > stroke;
       return true;
     });
+    if (r.states.size() != r.times.size())
+      throw std::logic_error(what + ": " + std::to_string(r.states.size()) + " states for " +
+                             std::to_string(r.times.size()) + " sample times");
     for (std::size_t k = 0; k < 3; ++k)
       r.metrics[k] = trackers[k].result();
     r.final_distance = dynamics.scaled_distance(integrator->y(), y1);

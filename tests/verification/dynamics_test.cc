@@ -278,6 +278,27 @@ TEST(Dynamics, ModesAreNamedAndComplete)
                      std::to_string(states) + (named ? "; all named" : "; a name missing"));
 }
 
+// A response is sampled up to its end: the last of its sample times is its duration, and each time
+// has its state. RV-1's large steps at -15 and 10 degC are the cases where duration x (n - 1)/(n - 1)
+// rounded one unit beyond the duration: the last sample was never taken and the output's last row
+// read past the states.
+TEST(Dynamics, StepIsSampledToItsEnd)
+{
+  const auto &v = rv1();
+  for (const double T : {-15.0, 10.0})
+    {
+      const auto d = v.dynamics(T);
+      const auto s = step_response(v.model, d, 0.0, rated, v.description.dynamics, 600);
+      ASSERT_EQ(s.states.size(), s.times.size()) << T;
+      EXPECT_EQ(s.times.back(), s.duration) << T;
+      // the last state is the end of the step: within its settling band of the final value
+      const double change = s.metrics[0].final - s.metrics[0].initial;
+      EXPECT_CHECK_ABSOLUTE("large step at " + format_number(T) + " degC: p_B at the last sample [of the change]",
+                            (s.states.back().brake_pressure - s.metrics[0].final) / change, 0.0, 0.02,
+                            "the final static point (the 2 % settling band)");
+    }
+}
+
 TEST(Dynamics, SmallNonlinearStepFollowsTheLinearisation)
 {
   // A step of 0.01 % of rated at the bias: the nonlinear p_B(t) against the linear step response
