@@ -10,6 +10,51 @@
 
 namespace servodrift
 {
+  namespace
+  {
+    /// PCHIP slope at interior node k from the neighbouring secants (Fritsch-Carlson, weighted
+    /// harmonic mean; zero at a local extremum, which keeps the interpolant monotone).
+    double interior_slope(double h0, double h1, double d0, double d1)
+    {
+      if (d0 * d1 <= 0)
+        return 0;
+      const double w1 = 2 * h1 + h0, w2 = h1 + 2 * h0;
+      return (w1 + w2) / (w1 / d0 + w2 / d1);
+    }
+
+    /// One-sided three-point slope at an end node, limited to keep the shape (as in SciPy's pchip).
+    double end_slope(double h0, double h1, double d0, double d1)
+    {
+      double m = ((2 * h0 + h1) * d0 - h0 * d1) / (h0 + h1);
+      if (m * d0 <= 0)
+        m = 0;
+      else if (d0 * d1 <= 0 && std::abs(m) > 3 * std::abs(d0))
+        m = 3 * d0;
+      return m;
+    }
+
+    /// The PCHIP slope at node k of the m >= 3 nodes (x, y): an end slope where node k is an end of
+    /// the grid (node 0 if `starts_grid', node m - 1 if `ends_grid'), else the interior slope
+    /// (0 at a stencil's end that is not the grid's: never asked for, the query's segment is inside).
+    double node_slope(const double *x, const double *y, std::size_t m, std::size_t k, bool starts_grid, bool ends_grid)
+    {
+      const auto secant = [&](std::size_t j) { return (y[j + 1] - y[j]) / (x[j + 1] - x[j]); };
+      const auto width = [&](std::size_t j) { return x[j + 1] - x[j]; };
+      if (k == 0)
+        return starts_grid ? end_slope(width(0), width(1), secant(0), secant(1)) : 0.0;
+      if (k == m - 1)
+        return ends_grid ? end_slope(width(k - 1), width(k - 2), secant(k - 1), secant(k - 2)) : 0.0;
+      return interior_slope(width(k - 1), width(k), secant(k - 1), secant(k));
+    }
+
+    /// The cubic Hermite interpolant on [x0, x0 + h] at t = (x - x0)/h from the ends' values and slopes.
+    double hermite(double t, double h, double y0, double y1, double m0, double m1)
+    {
+      const double t2 = t * t, t3 = t2 * t;
+      return (2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + t) * h * m0 + (-2 * t3 + 3 * t2) * y1 + (t3 - t2) * h * m1;
+    }
+  } // namespace
+
   GridFunction::GridFunction(std::string table_label, std::vector<std::string> axis_names_,
                              std::vector<std::vector<double>> axes_, std::vector<double> values_)
     : label(std::move(table_label))
@@ -30,6 +75,13 @@ namespace servodrift
       }
     if (values.size() != n)
       throw std::logic_error("GridFunction: value count does not match the grid");
+    // The slopes along the last axis depend on the table alone: set once instead of at each query.
+    const std::vector<double> &g = axes.back();
+    last_axis_slopes.assign(n, 0.0);
+    if (g.size() >= 3)
+      for (std::size_t line = 0; line < n; line += g.size())
+        for (std::size_t k = 0; k < g.size(); ++k)
+          last_axis_slopes[line + k] = node_slope(g.data(), values.data() + line, g.size(), k, true, true);
   }
 
   GridFunction GridFunction::from_table(const Table &table, const std::string &table_label,
@@ -99,30 +151,6 @@ namespace servodrift
     return interpolate(0, 0, segments);
   }
 
-  namespace
-  {
-    /// PCHIP slope at interior node k from the neighbouring secants (Fritsch-Carlson, weighted
-    /// harmonic mean; zero at a local extremum, which keeps the interpolant monotone).
-    double interior_slope(double h0, double h1, double d0, double d1)
-    {
-      if (d0 * d1 <= 0)
-        return 0;
-      const double w1 = 2 * h1 + h0, w2 = h1 + 2 * h0;
-      return (w1 + w2) / (w1 / d0 + w2 / d1);
-    }
-
-    /// One-sided three-point slope at an end node, limited to keep the shape (as in SciPy's pchip).
-    double end_slope(double h0, double h1, double d0, double d1)
-    {
-      double m = ((2 * h0 + h1) * d0 - h0 * d1) / (h0 + h1);
-      if (m * d0 <= 0)
-        m = 0;
-      else if (d0 * d1 <= 0 && std::abs(m) > 3 * std::abs(d0))
-        m = 3 * d0;
-      return m;
-    }
-  } // namespace
-
   GridFunction::Segment GridFunction::segment(unsigned int a, double xq) const
   {
     const std::vector<double> &g = axes[a];
@@ -140,40 +168,32 @@ namespace servodrift
 
   double GridFunction::interpolate(unsigned int a, std::size_t offset, const Segment *segments) const
   {
-    if (a == axes.size())
-      return values[offset];
     const std::vector<double> &g = axes[a];
     const std::size_t n = g.size();
     const double xq = segments[a].x;
     const std::size_t i = segments[a].i, first = segments[a].first, last = segments[a].last;
+    const double h = g[i + 1] - g[i];
+
+    // The last axis: the tabulated values and their slopes along it (set once, in the constructor).
+    if (a + 1 == axes.size())
+      {
+        const std::size_t k0 = offset + i * strides[a], k1 = k0 + strides[a];
+        if (n == 2)
+          return values[k0] + (values[k1] - values[k0]) / h * (xq - g[i]);
+        return hermite((xq - g[i]) / h, h, values[k0], values[k1], last_axis_slopes[k0], last_axis_slopes[k1]);
+      }
 
     // Values at the nodes i-1 .. i+2 that exist, interpolated along the remaining axes.
-    double y[4] = {0, 0, 0, 0}, xs[4] = {0, 0, 0, 0};
+    double y[4] = {0, 0, 0, 0};
     for (std::size_t j = first; j <= last; ++j)
-      {
-        y[j - first] = interpolate(a + 1, offset + j * strides[a], segments);
-        xs[j - first] = g[j];
-      }
+      y[j - first] = interpolate(a + 1, offset + j * strides[a], segments);
     const std::size_t li = i - first; // local index of g[i]
     const std::size_t m = last - first + 1;
-    const double h = xs[li + 1] - xs[li];
-    const double d = (y[li + 1] - y[li]) / h;
     if (m == 2)
-      return y[li] + d * (xq - xs[li]);
-
-    auto secant = [&](std::size_t k) { return (y[k + 1] - y[k]) / (xs[k + 1] - xs[k]); };
-    auto width = [&](std::size_t k) { return xs[k + 1] - xs[k]; };
-    auto slope_at = [&](std::size_t k) {
-      if (k == 0) // first node of the stencil: a grid end only if it is g[0]
-        return first == 0 ? end_slope(width(0), width(1), secant(0), secant(1)) : 0.0;
-      if (k == m - 1)
-        return last == n - 1 ? end_slope(width(k - 1), width(k - 2), secant(k - 1), secant(k - 2)) : 0.0;
-      return interior_slope(width(k - 1), width(k), secant(k - 1), secant(k));
-    };
-    const double m0 = slope_at(li), m1 = slope_at(li + 1);
-    const double t = (xq - xs[li]) / h;
-    const double t2 = t * t, t3 = t2 * t;
-    return (2 * t3 - 3 * t2 + 1) * y[li] + (t3 - 2 * t2 + t) * h * m0 + (-2 * t3 + 3 * t2) * y[li + 1] +
-           (t3 - t2) * h * m1;
+      return y[li] + (y[li + 1] - y[li]) / h * (xq - g[i]);
+    const double *xs = g.data() + first;
+    const double m0 = node_slope(xs, y, m, li, first == 0, last == n - 1);
+    const double m1 = node_slope(xs, y, m, li + 1, first == 0, last == n - 1);
+    return hermite((xq - g[i]) / h, h, y[li], y[li + 1], m0, m1);
   }
 } // namespace servodrift

@@ -41,6 +41,7 @@ namespace servodrift
     std::vector<std::vector<double>> axes;
     std::vector<double> values;
     std::vector<std::size_t> strides;
+    std::vector<double> last_axis_slopes; ///< PCHIP slopes along the last axis at every node
 
     /// Where a query falls on one axis: the clamped coordinate, its segment [g[i], g[i+1]] and the
     /// nodes first..last of its PCHIP stencil. Found once per axis and query.
