@@ -11,12 +11,19 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <optional>
 #include <sstream>
 
 namespace servodrift
 {
+  void prefer_isolated_mpi_singleton()
+  {
+    if (std::getenv("OMPI_COMM_WORLD_SIZE") == nullptr) // not started by mpirun
+      ::setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+  }
+
   unsigned int mpi_rank()
   {
     return dealii::Utilities::MPI::job_supports_mpi() ? dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) : 0;

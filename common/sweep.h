@@ -31,6 +31,12 @@ namespace servodrift
     std::chrono::steady_clock::time_point start, last_print;
   };
 
+  /// Call before MPI is initialised. A process that mpirun did not start is an Open MPI singleton,
+  /// which starts a daemon of its own (about 0.1 s) that only spawning processes would need, and
+  /// servodrift spawns none: it is asked to run isolated (MCA `ess_singleton_isolated'), unless
+  /// the environment says otherwise. Other MPI implementations ignore the variable.
+  void prefer_isolated_mpi_singleton();
+
   using CaseRows = std::vector<std::vector<double>>;
 
   /// Runs cases 0..n_cases-1 over the MPI ranks and returns all rows, in case order, on every rank.

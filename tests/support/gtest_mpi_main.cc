@@ -1,6 +1,7 @@
 // GoogleTest main that initialises MPI (through deal.II) as servodrift's main does, so that the
 // sweep runner works the same in the tests. The temporary output directories of a passing run are
 // removed; a failing run keeps them (the failure messages name them).
+#include "common/sweep.h"
 #include "tests/support/test_support.h"
 
 #include <deal.II/base/mpi.h>
@@ -60,6 +61,7 @@ int main(int argc, char **argv)
     return RUN_ALL_TESTS();
   }
   const PrivateMpiSessionDirectory session; // before MPI_Init, removed after MPI_Finalize
+  servodrift::prefer_isolated_mpi_singleton();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   ::testing::InitGoogleTest(&argc, argv);
   const int result = RUN_ALL_TESTS();
