@@ -343,7 +343,7 @@ namespace servodrift::flow
 
   // RV-1's fixed orifice (l/d = 2.2) on its default mesh at 40 degC.
   // Below cavitation (no cavitation model, the viscosity set for Re_0 = 5 000 and 20 000 at dp = 10.3
-  // MPa): against Lichtarowicz et al. (1965), C_d = [1/C_d,u + 20 (1 + 2.25 l/d)/Re]^-1, C_d,u = 0.827 -
+  // MPa, and 2 000 and 10 000 for the two-layer k-epsilon): against Lichtarowicz et al. (1965), C_d = [1/C_d,u + 20 (1 + 2.25 l/d)/Re]^-1, C_d,u = 0.827 -
   // 0.0085 l/d (E21), their correlation of their measurements; tolerance 5 %.
   // Cavitating (the cavitation model on, the oil at 40 degC, dp = 15.45 and 20.6 MPa): Nurick (1976),
   // C_d = C_c sqrt(K), K = (p_1 - p_v)/(p_1 - p_2), with the sharp-edged contraction C_c = 0.61;
@@ -366,8 +366,13 @@ namespace servodrift::flow
     const PilotClosedForms closed_forms(v, 40);
     const double reynolds_at_mu = closed_forms.fixed_orifice(dp).reynolds_number;
     const double l_over_d = v.pilot.fixed_orifice_length / v.pilot.fixed_orifice_diameter;
+    // the two-layer k-epsilon, the default model, over the turbulent range (continued from Re_0 2000,
+    // as the sweep's viscosities fall); SST at its two ends
+    const std::vector<double> reynolds_numbers = GetParam() == Turbulence::k_epsilon ?
+                                                   std::vector<double>{2000, 5000, 10000, 20000} :
+                                                   std::vector<double>{5000, 20000};
     std::unique_ptr<PilotField> previous;
-    for (double Re : {5000.0, 20000.0})
+    for (double Re : reynolds_numbers)
       {
         c.fluid.viscosity = mu * reynolds_at_mu / Re;
         auto orifice = std::make_unique<PilotField>(pilot_field_settings(v), PilotGeometry::fixed_orifice, c);
