@@ -7,6 +7,7 @@
 #include "common/valve_description.h"
 #include "common/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
+#include "flow/pilot_field_retry.h"
 
 #include <map>
 #include <memory>
@@ -147,31 +148,22 @@ namespace servodrift::flow
     void offer(const State &s) { offered[s.model] = s.fields; }
 
   private:
-    /// Continuation step control: a case that does not converge from its starting fields is tried
-    /// once more, from the chain's last converged fields of its own model through the geometric
-    /// mean of the two pressure levels (half the step, in the logarithm), or, where there is no
-    /// such state at this gap or it is the same pressure level, from rest (solve_from_rest), so that
-    /// the retry does not repeat the path that failed. A laminar or k-epsilon case stops there; SST
-    /// and Launder-Sharma go on to solve_from_k_epsilon. If every attempt fails, the state nearest a
-    /// steady state (FailedAttempts: a stall at the case's level, k-epsilon's solution that model t
-    /// diverged from, a stall on the way) propagates as a NotConverged with its fields in `slot', for
-    /// the time average, its message listing the attempts; if none left a state, the last failure
-    /// propagates. Defined in flow/pilot_field_retry.cc.
-    PilotFieldResult solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
-                                      bool started_elsewhere);
-    /// The case from rest (laminar start-up) into a new `slot', with half the steps of `Field
-    /// solution/Continuation ratio' (in the logarithm) for this solve.
-    PilotFieldResult solve_from_rest(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
-    /// A rung of the retry, for the models less robust than the two-layer k-epsilon (SST,
-    /// Launder-Sharma): the case solved with the two-layer k-epsilon (on its own retry path, from the
-    /// chain's last fields if they are this model's), and model t started from that solution at the
-    /// same pressure level in a new `slot', as users of CFD codes start SST from a converged
-    /// k-epsilon field. SST's cavitating orifice at 20.6 MPa diverges on its own as the cavity grows
-    /// by thousands of cells in a few iterations; from k-epsilon's cavity it converges
-    /// (doc/validation.md, "Robustness"). Its iterations include k-epsilon's; a failure of either
-    /// propagates (`slot' stays empty if k-epsilon's failed; if model t diverged, it holds model t
-    /// set afresh into k-epsilon's solution).
-    PilotFieldResult solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
+    /// The case by the retry ladder (flow/pilot_field_retry.h, defined in pilot_field_retry.cc):
+    /// retry_ladder's attempts for model t in `slot', run by run_ladder until one converges. If none
+    /// does, the state nearest a steady state (FailedAttempts) is left in `slot' and written to the
+    /// case's VTU, and the outcome says stalled (its time average marches from that state) or, if no
+    /// attempt left a state, failed.
+    CaseOutcome solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
+                                 bool started_elsewhere);
+    /// Attempt::from_rest_in_smaller_steps: the case from rest (laminar start-up) in a new `slot',
+    /// with half the steps of `Field solution/Continuation ratio' (in the logarithm) for this solve.
+    AttemptOutcome solve_from_rest(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
+    /// Attempt::from_k_epsilon_solution: the case solved with the two-layer k-epsilon (on its own
+    /// ladder, from the chain's last fields if they are model t's), and model t started from that
+    /// solution at the same pressure level in a new `slot'. Its iterations include k-epsilon's. If
+    /// k-epsilon's solve fails, `slot' is left as it was (failed_without_state); if model t diverges,
+    /// `slot' holds model t set afresh into k-epsilon's solution (diverged_from_start).
+    AttemptOutcome solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp);
     /// A case whose steady iteration stalled (`why'): its time average into `record'
     /// (flow/pilot_field_time_average.h); false, with a warning, if that fails too or the uncertainty
     /// of its mean is beyond `Time average/Uncertainty limit' (the average is then recorded,

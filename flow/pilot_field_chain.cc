@@ -168,9 +168,10 @@ namespace servodrift::flow
                               format_number(conditions.temperature) + " degC" +
                               (orifice ? "" : ", gap " + format_number(h * 1e6) + " um") + ", dp " +
                               format_number(dp * 1e-6) + " MPa (" + model_name(t) + ")";
-    try
+    const CaseOutcome outcome = solve_with_retry(slot, t, h, dp, start.has_value());
+    if (outcome.kind == CaseOutcome::Kind::converged)
       {
-        record_result(record, solve_with_retry(slot, t, h, dp, start.has_value()));
+        record_result(record, outcome.result);
         record[flag] =
           computed_case_flag(record[discharge_coefficient], reduced.discharge_coefficient, record[reynolds_number]);
         last = slot->fields();
@@ -179,11 +180,11 @@ namespace servodrift::flow
         if (writes_fields(valve, conditions.temperature))
           slot->write_vtu(vtu);
       }
-    catch (const std::runtime_error &e) // NotConverged or diverged: flagged, the reduced order stands in
+    else // flagged, the reduced order stands in
       {
         // a case that stalls may have no steady solution: its time average stands for it
-        if (valve.pilot.time_average.enabled && dynamic_cast<const NotConverged *>(&e) &&
-            time_average_of(*slot, dp, where, e.what(), record))
+        if (valve.pilot.time_average.enabled && outcome.kind == CaseOutcome::Kind::stalled &&
+            time_average_of(*slot, dp, where, outcome.message, record))
           {
             record[flag] = flags::time_averaged;
             record[wall_time] = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
@@ -191,7 +192,7 @@ namespace servodrift::flow
               slot->set_fields(*last);
             return record;
           }
-        std::cerr << "servodrift: warning: " << where << ": " << e.what()
+        std::cerr << "servodrift: warning: " << where << ": " << outcome.message
                   << "; its table row is flagged 2 and carries the reduced-order value\n";
         record[flow_rate] = reduced.flow_rate;
         record[discharge_coefficient] = reduced.discharge_coefficient;
@@ -254,15 +255,11 @@ namespace servodrift::flow
     record[time_step] = a.time_step;
     record[unconverged_steps] = a.unconverged_steps;
     record[decorrelation_steps] = a.decorrelation_steps;
-    if (!steps_converged(a))
+    const TimeAverageVerdict verdict = time_average_verdict(a, valve.pilot.time_average.uncertainty_limit);
+    if (!verdict.stands())
       {
-        std::cerr << "servodrift: warning: " << where << ": " << a.unconverged_steps << " of its " << a.averaged_steps
-                  << " averaged time steps stopped at the step's iteration cap short of its tolerance (held by "
-                  << capped_steps_held_by(a) << "), more than "
-                  << format_number(100 * unconverged_steps_limit) << " % at Courant number "
-                  << format_number(a.courant_number) << " (after " << a.courant_halvings
-                  << " halvings): the mean is not that of the marched equations (more `Pilot stage/Time average/Step "
-                     "halvings' or `Step iterations'); listed in flow/*_time_averages.csv, not used\n";
+        std::cerr << "servodrift: warning: " << where << ": " << verdict.reason
+                  << ": listed in flow/*_time_averages.csv, not used\n";
         return false;
       }
     if (a.unconverged_steps > 0)
@@ -270,32 +267,6 @@ namespace servodrift::flow
                 << " averaged time steps stopped at the step's iteration cap (`Pilot stage/Time average/Step "
                    "iterations') short of its tolerance (held by "
                 << capped_steps_held_by(a) << ")\n";
-    if (!window_spans_motion(a))
-      {
-        std::cerr << "servodrift: warning: " << where << ": its " << a.averaged_steps
-                  << " averaged time steps do not span its flow's motion (the autocorrelation of C_d or the force "
-                     "falls to zero only after "
-                  << a.decorrelation_steps << " steps; " << lags_per_window
-                  << " times that are needed for its uncertainty to hold) within `Pilot stage/Time average/Steps "
-                     "limit': listed in flow/*_time_averages.csv, not used\n";
-        return false;
-      }
-    // the tables want the mean (the valve does not follow a jet or cavity cycling at 0.1-1 MHz):
-    // it stands for the case if the run pins it down, whatever the unsteadiness (the spread)
-    const double limit = valve.pilot.time_average.uncertainty_limit;
-    const double C_d_error = a.discharge_coefficient_relative_uncertainty;
-    const double force_error = a.flapper_force_relative_uncertainty;
-    if (!(C_d_error <= limit && force_error <= limit))
-      {
-        std::cerr << "servodrift: warning: " << where << ": the mean of its time average is uncertain by "
-                  << format_number(100 * C_d_error) << " % in C_d and " << format_number(100 * force_error)
-                  << " % in the flapper force (standard errors), beyond `Pilot stage/Time average/Uncertainty "
-                     "limit' ("
-                  << format_number(100 * limit) << " %) after " << std::lround(a.averaged_time / a.time_step)
-                  << " averaged steps, what `Pilot stage/Time average/Steps limit' allows: listed in "
-                     "flow/*_time_averages.csv, not used\n";
-        return false;
-      }
     record_result(record, a.mean);
     if (!failure_output.empty()) // the case's VTU (`Output/Flow fields'): the mean flow
       {

@@ -1,5 +1,6 @@
-// The retry ladder of the field-level pilot chain (Chain::solve_with_retry): the attempts at a case
-// that does not converge from the chain's state, and which of their stalls a time average marches from.
+// The retry ladder of the field-level pilot chain: the ladder as data, its driver and the ranking of
+// the failed attempts (pilot_field_retry.h), and the attempts themselves on a case's PilotField
+// (Chain::solve_with_retry, solve_from_rest, solve_from_k_epsilon).
 #include "flow/pilot_field_retry.h"
 
 #include "common/error.h"
@@ -14,163 +15,155 @@
 
 namespace servodrift::flow
 {
-  void FailedAttempts::add(const std::string &how, const PilotField &field)
+  std::vector<Attempt> retry_ladder(Turbulence t, bool own_state)
   {
-    last_failure = std::current_exception();
+    std::vector<Attempt> ladder{Attempt::from_current_state,
+                                own_state ? Attempt::through_mean_level : Attempt::from_rest_in_smaller_steps};
+    if (t != Turbulence::laminar && t != Turbulence::k_epsilon)
+      ladder.push_back(Attempt::from_k_epsilon_solution);
+    return ladder;
+  }
+
+  void FailedAttempts::add(const std::string &how, const AttemptOutcome &o, const FlowFields &state)
+  {
+    last = o;
     ++count;
     list += (list.empty() ? "" : "; ") + how;
     nearest_is_last = false;
-    try
+    using Kind = AttemptOutcome::Kind;
+    switch (o.kind)
       {
-        std::rethrow_exception(last_failure);
-      }
-    catch (const NotConverged &e)
-      {
-        const double level = field.solver().boundary_pressure("inlet");
-        const bool on_the_way = level != case_level;
-        list += " stalled at largest residual " + format_number(largest_residual(e.residuals)) +
-                (on_the_way ? " on the way, at " + format_number(level * 1e-6) + " MPa" : "");
-        consider(on_the_way ? Rank::stall_on_the_way : Rank::stall_at_case_level, e.residuals,
-                 "the stall nearest a steady state", field);
-      }
-    catch (const std::exception &)
-      {
-        list += " diverged";
+        case Kind::stalled:
+          {
+            const bool on_the_way = o.level != case_level;
+            list += " stalled at largest residual " + format_number(largest_residual(o.residuals)) +
+                    (on_the_way ? " on the way, at " + format_number(o.level * 1e-6) + " MPa" : "");
+            consider(on_the_way ? Rank::stall_on_the_way : Rank::stall_at_case_level, o,
+                     "the stall nearest a steady state", state);
+            break;
+          }
+        case Kind::diverged: list += " diverged"; break;
+        case Kind::diverged_from_start:
+          list += " diverged";
+          consider(Rank::diverged_start, o, "its start " + how + ", the state nearest a steady state", state);
+          break;
+        case Kind::failed_without_state: list += " failed"; break;
+        case Kind::converged: break;
       }
   }
 
-  void FailedAttempts::add_diverged_start(const std::string &how, const PilotField &field)
+  void FailedAttempts::consider(Rank rank, const AttemptOutcome &o, const std::string &description,
+                                const FlowFields &state)
   {
-    last_failure = std::current_exception();
-    ++count;
-    list += (list.empty() ? "" : "; ") + how + " diverged";
-    nearest_is_last = false;
-    consider(Rank::diverged_start, Residuals{}, "its start " + how + ", the state nearest a steady state", field);
-  }
-
-  void FailedAttempts::consider(Rank rank, const Residuals &residuals, const std::string &description,
-                                const PilotField &field)
-  {
-    if (has_state_to_march() && (rank > nearest_rank || (rank == nearest_rank && !(largest_residual(residuals) <
-                                                                                     largest_residual(nearest_residuals)))))
+    // a start's residuals in its model are not known: zero
+    const Residuals residuals = o.kind == AttemptOutcome::Kind::stalled ? o.residuals : Residuals{};
+    if (has_nearest && (rank > nearest_rank ||
+                        (rank == nearest_rank && !(largest_residual(residuals) < largest_residual(nearest_residuals)))))
       return;
+    has_nearest = true;
     nearest_rank = rank;
     nearest_residuals = residuals;
+    nearest_message = o.message;
     nearest_description = description;
-    nearest_failure = last_failure;
-    nearest_fields = field.fields();
-    nearest_field = &field;
+    nearest_fields = state;
     nearest_is_last = true;
   }
 
-  void FailedAttempts::add_without_state(const std::string &how)
+  CaseOutcome FailedAttempts::outcome() const
   {
-    last_failure = std::current_exception();
-    ++count;
-    list += (list.empty() ? "" : "; ") + how + " failed";
-    nearest_is_last = false;
-  }
-
-  bool FailedAttempts::restore_nearest(PilotField &field) const
-  {
-    if (!has_state_to_march() || (nearest_is_last && &field == nearest_field))
-      return false;
-    field.set_fields(nearest_fields);
-    return true;
-  }
-
-  void FailedAttempts::rethrow() const
-  {
-    if (!has_state_to_march())
-      std::rethrow_exception(last_failure);
+    if (!has_nearest) // as the last attempt failed: a stall of k-epsilon's solve is marched too
+      return {last.stall ? CaseOutcome::Kind::stalled : CaseOutcome::Kind::failed, {}, last.message, last.residuals};
     if (count < 2 && nearest_rank != Rank::diverged_start)
-      std::rethrow_exception(nearest_failure);
-    try
-      {
-        std::rethrow_exception(nearest_failure);
-      }
-    catch (const std::exception &e) // a stall, or the divergence of a start
-      {
-        throw NotConverged(std::string(e.what()) + " (" + nearest_description + " of " + std::to_string(count) +
-                             (count == 1 ? " attempt: " : " attempts: ") + list + ")",
-                           nearest_residuals);
-      }
+      return {CaseOutcome::Kind::stalled, {}, nearest_message, nearest_residuals};
+    return {CaseOutcome::Kind::stalled, {},
+            nearest_message + " (" + nearest_description + " of " + std::to_string(count) +
+              (count == 1 ? " attempt: " : " attempts: ") + list + ")",
+            nearest_residuals};
   }
 
-  PilotFieldResult Chain::solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
-                                           bool started_elsewhere)
+  CaseOutcome run_ladder(const std::vector<Attempt> &ladder, const std::function<AttemptOutcome(Attempt)> &attempt,
+                         const std::function<FlowFields()> &state_after,
+                         const std::function<std::string(Attempt)> &describe, FailedAttempts &failed)
   {
-    FailedAttempts failed(dp);
-    const bool at_rest = slot->at_rest();
-    try
+    for (const Attempt a : ladder)
       {
-        return slot->solve(dp);
+        const AttemptOutcome o = attempt(a);
+        if (o.kind == AttemptOutcome::Kind::converged)
+          return {CaseOutcome::Kind::converged, o.result, "", {}};
+        failed.add(describe(a), o, o.leaves_state() ? state_after() : FlowFields{});
       }
-    catch (const std::runtime_error &)
-      {
-        failed.add(at_rest ? "from rest" : started_elsewhere ? "from the fields given" : "from the chain's last state",
-                   *slot);
-      }
-    const bool own_state = last && last_model == t && !started_elsewhere && last_dp != dp;
-    try
-      {
-        if (own_state)
-          {
-            slot->set_fields(*last);
-            const double between = std::sqrt(last_dp * dp);
-            PilotFieldResult r = slot->solve(between);
-            const unsigned int iterations = r.iterations;
-            r = slot->solve(dp);
-            r.iterations += iterations;
-            return r;
-          }
-        return solve_from_rest(slot, t, h, dp);
-      }
-    catch (const std::runtime_error &)
-      {
-        failed.add(own_state ? "from the chain's last state through the mean pressure level" : "from rest in smaller steps",
-                   *slot);
-      }
-    if (t != Turbulence::laminar && t != Turbulence::k_epsilon)
-      {
-        std::unique_ptr<PilotField> from_k_epsilon;
-        try
-          {
-            const PilotFieldResult r = solve_from_k_epsilon(from_k_epsilon, t, h, dp);
-            slot = std::move(from_k_epsilon);
-            return r;
-          }
-        catch (const NotConverged &)
-          {
-            if (!from_k_epsilon) // k-epsilon's solve failed: no state of model t
-              failed.add_without_state("from k-epsilon's solution");
-            else
-              {
-                failed.add("from k-epsilon's solution", *from_k_epsilon);
-                // the slot holds the last attempt's state, so that restore_nearest knows when it is the nearest
-                slot = std::move(from_k_epsilon);
-              }
-          }
-        catch (const std::runtime_error &)
-          {
-            if (!from_k_epsilon)
-              failed.add_without_state("from k-epsilon's solution");
-            else // model t diverged: from_k_epsilon holds k-epsilon's solution again
-              {
-                failed.add_diverged_start("from k-epsilon's solution", *from_k_epsilon);
-                slot = std::move(from_k_epsilon);
-              }
-          }
-      }
-    // the nearest state is marched for the time average; its fields go to the case's VTU (a
-    // later attempt, or k-epsilon's on the way to model t, wrote its own there)
-    failed.restore_nearest(*slot);
-    if (failed.has_state_to_march() && !failure_output.empty())
-      slot->write_vtu(failure_output);
-    failed.rethrow();
+    return failed.outcome();
   }
 
-  PilotFieldResult Chain::solve_from_rest(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp)
+  AttemptOutcome attempt_outcome(const std::function<PilotFieldResult()> &solve, const PilotField &field)
+  {
+    try
+      {
+        return {AttemptOutcome::Kind::converged, solve()};
+      }
+    catch (const NotConverged &e)
+      {
+        AttemptOutcome o{AttemptOutcome::Kind::stalled, {}, e.what(), e.residuals};
+        o.level = field.solver().boundary_pressure("inlet");
+        o.stall = true;
+        return o;
+      }
+    catch (const std::runtime_error &e)
+      {
+        return {AttemptOutcome::Kind::diverged, {}, e.what()};
+      }
+  }
+
+  CaseOutcome Chain::solve_with_retry(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp,
+                                      bool started_elsewhere)
+  {
+    const bool at_rest = slot->at_rest();
+    const bool own_state = last && last_model == t && !started_elsewhere && last_dp != dp;
+    const auto describe = [&](Attempt a) -> std::string {
+      switch (a)
+        {
+          case Attempt::from_current_state:
+            return at_rest ? "from rest" : started_elsewhere ? "from the fields given" : "from the chain's last state";
+          case Attempt::through_mean_level: return "from the chain's last state through the mean pressure level";
+          case Attempt::from_rest_in_smaller_steps: return "from rest in smaller steps";
+          case Attempt::from_k_epsilon_solution: return "from k-epsilon's solution";
+        }
+      return "";
+    };
+    const auto attempt = [&](Attempt a) -> AttemptOutcome {
+      switch (a)
+        {
+          case Attempt::from_current_state: return attempt_outcome([&] { return slot->solve(dp); }, *slot);
+          case Attempt::through_mean_level:
+            slot->set_fields(*last);
+            return attempt_outcome(
+              [&] {
+                const PilotFieldResult between = slot->solve(std::sqrt(last_dp * dp));
+                PilotFieldResult r = slot->solve(dp);
+                r.iterations += between.iterations;
+                return r;
+              },
+              *slot);
+          case Attempt::from_rest_in_smaller_steps: return solve_from_rest(slot, t, h, dp);
+          case Attempt::from_k_epsilon_solution: return solve_from_k_epsilon(slot, t, h, dp);
+        }
+      throw std::logic_error("Chain: an attempt without a way");
+    };
+    FailedAttempts failed(dp);
+    const CaseOutcome o = run_ladder(retry_ladder(t, own_state), attempt, [&] { return slot->fields(); }, describe,
+                                     failed);
+    if (o.kind == CaseOutcome::Kind::converged || !failed.has_state_to_march())
+      return o;
+    // the nearest state is marched for the time average; its fields go to the case's VTU (a later
+    // attempt, or k-epsilon's on the way to model t, wrote its own there)
+    if (!failed.last_is_nearest())
+      slot->set_fields(failed.nearest_state());
+    if (!failure_output.empty())
+      slot->write_vtu(failure_output);
+    return o;
+  }
+
+  AttemptOutcome Chain::solve_from_rest(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp)
   {
     PilotFieldCase c = conditions;
     c.turbulence = t;
@@ -178,20 +171,12 @@ namespace servodrift::flow
     slot->set_failure_output(failure_output);
     // the smaller steps for this solve only: the chain's next cases take the valve's
     slot->set_continuation_ratio(std::sqrt(settings.solution.continuation_ratio));
-    try
-      {
-        PilotFieldResult r = slot->solve(dp);
-        slot->set_continuation_ratio(settings.solution.continuation_ratio);
-        return r;
-      }
-    catch (const std::runtime_error &)
-      {
-        slot->set_continuation_ratio(settings.solution.continuation_ratio);
-        throw;
-      }
+    const AttemptOutcome o = attempt_outcome([&] { return slot->solve(dp); }, *slot);
+    slot->set_continuation_ratio(settings.solution.continuation_ratio);
+    return o;
   }
 
-  PilotFieldResult Chain::solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp)
+  AttemptOutcome Chain::solve_from_k_epsilon(std::unique_ptr<PilotField> &slot, Turbulence t, double h, double dp)
   {
     PilotFieldCase c = conditions;
     c.turbulence = Turbulence::k_epsilon;
@@ -199,31 +184,37 @@ namespace servodrift::flow
     k_epsilon->set_failure_output(failure_output);
     if (last && last_model == t)
       k_epsilon->set_fields(*last);
-    const PilotFieldResult start = solve_with_retry(k_epsilon, Turbulence::k_epsilon, h, dp, true);
+    const CaseOutcome start = solve_with_retry(k_epsilon, Turbulence::k_epsilon, h, dp, true);
+    if (start.kind != CaseOutcome::Kind::converged) // no state of model t: `slot' keeps the last attempt's
+      {
+        AttemptOutcome o{AttemptOutcome::Kind::failed_without_state, {}, start.message, start.residuals};
+        o.stall = start.kind == CaseOutcome::Kind::stalled;
+        return o;
+      }
     c.turbulence = t;
-    const auto start_model_t = [&] {
-      slot = std::make_unique<PilotField>(settings, kind, c, h);
-      slot->set_failure_output(failure_output);
-      slot->set_fields(k_epsilon->fields());
+    const auto model_t_from_k_epsilon = [&] {
+      auto field = std::make_unique<PilotField>(settings, kind, c, h);
+      field->set_failure_output(failure_output);
+      field->set_fields(k_epsilon->fields());
+      return field;
     };
-    start_model_t();
-    try
-      {
-        PilotFieldResult r = slot->solve(dp);
-        r.iterations += start.iterations + start.coarse_mesh_iterations;
+    auto model_t = model_t_from_k_epsilon();
+    AttemptOutcome o = attempt_outcome(
+      [&] {
+        PilotFieldResult r = model_t->solve(dp);
+        r.iterations += start.result.iterations + start.result.coarse_mesh_iterations;
         return r;
-      }
-    catch (const NotConverged &)
+      },
+      *model_t);
+    if (o.kind == AttemptOutcome::Kind::diverged)
       {
-        throw; // the stall is model t's state at the case's level
+        // model t set afresh into k-epsilon's solution, the state its time average may march from
+        // (at 90 degC, Launder-Sharma's orifice at 15.45 MPa diverges in the steady iteration from
+        // there but settles when marched; bench_orifice_march 90)
+        model_t = model_t_from_k_epsilon();
+        o.kind = AttemptOutcome::Kind::diverged_from_start;
       }
-    catch (const std::runtime_error &)
-      {
-        // diverged: model t set afresh into k-epsilon's solution, the state its time average may
-        // march from (at 90 degC, Launder-Sharma's orifice at 15.45 MPa diverges in the steady
-        // iteration from there but settles when marched; bench_orifice_march 90)
-        start_model_t();
-        throw;
-      }
+    slot = std::move(model_t); // a stall is model t's state at the case's level
+    return o;
   }
 } // namespace servodrift::flow

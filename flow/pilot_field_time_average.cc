@@ -1,8 +1,11 @@
 #include "flow/pilot_field_time_average.h"
 
+#include "common/error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace servodrift::flow
@@ -109,6 +112,38 @@ namespace servodrift::flow
   bool steps_converged(const TimeAverage &a)
   {
     return a.unconverged_steps <= unconverged_steps_limit * a.averaged_steps;
+  }
+
+  TimeAverageVerdict time_average_verdict(const TimeAverage &a, double uncertainty_limit)
+  {
+    using Kind = TimeAverageVerdict::Kind;
+    if (!steps_converged(a))
+      return {Kind::steps_not_solved,
+              std::to_string(a.unconverged_steps) + " of its " + std::to_string(a.averaged_steps) +
+                " averaged time steps stopped at the step's iteration cap short of its tolerance (held by " +
+                capped_steps_held_by(a) + "), more than " + format_number(100 * unconverged_steps_limit) +
+                " % at Courant number " + format_number(a.courant_number) + " (after " +
+                std::to_string(a.courant_halvings) +
+                " halvings): the mean is not that of the marched equations (more `Pilot stage/Time average/Step "
+                "halvings' or `Step iterations')"};
+    if (!window_spans_motion(a))
+      return {Kind::window_too_short,
+              "its " + std::to_string(a.averaged_steps) +
+                " averaged time steps do not span its flow's motion (the autocorrelation of C_d or the force "
+                "falls to zero only after " +
+                std::to_string(a.decorrelation_steps) + " steps; " + std::to_string(lags_per_window) +
+                " times that are needed for its uncertainty to hold) within `Pilot stage/Time average/Steps limit'"};
+    const double C_d_error = a.discharge_coefficient_relative_uncertainty;
+    const double force_error = a.flapper_force_relative_uncertainty;
+    if (!(C_d_error <= uncertainty_limit && force_error <= uncertainty_limit))
+      return {Kind::mean_uncertain,
+              "the mean of its time average is uncertain by " + format_number(100 * C_d_error) + " % in C_d and " +
+                format_number(100 * force_error) +
+                " % in the flapper force (standard errors), beyond `Pilot stage/Time average/Uncertainty limit' (" +
+                format_number(100 * uncertainty_limit) + " %) after " +
+                std::to_string(std::lround(a.averaged_time / a.time_step)) +
+                " averaged steps, what `Pilot stage/Time average/Steps limit' allows"};
+    return {Kind::stands, ""};
   }
 
   std::string capped_steps_held_by(const TimeAverage &a)

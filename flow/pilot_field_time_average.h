@@ -100,6 +100,27 @@ namespace servodrift::flow
   /// decorrelation_steps, or spreads within steady_spread of the means.
   bool window_spans_motion(const TimeAverage &a);
 
+  /// Whether a time average stands for its case in the tables, and why not: one verdict, its reason
+  /// a message's clause (empty where it stands).
+  struct TimeAverageVerdict
+  {
+    enum class Kind
+    {
+      stands,            ///< the mean stands for the case (flag 5)
+      steps_not_solved,  ///< more than unconverged_steps_limit of its steps capped (steps_converged)
+      window_too_short,  ///< its averaged time does not span the flow's motion (window_spans_motion)
+      mean_uncertain     ///< a relative standard error beyond `Time average/Uncertainty limit'
+    } kind;
+    std::string reason;
+    bool stands() const { return kind == Kind::stands; }
+  };
+
+  /// The verdict on a finished time average, its checks in this order: the steps solved their
+  /// equations, the window spans the motion, the means are within `uncertainty_limit' (relative
+  /// standard errors). A mean that stands does so whatever the unsteadiness (the spread): the
+  /// tables want the mean, the valve does not follow a jet or cavity cycling at 0.1-1 MHz.
+  TimeAverageVerdict time_average_verdict(const TimeAverage &a, double uncertainty_limit);
+
   /// The standard error of the mean of a correlated series by batch means: the series cut into
   /// `batches' consecutive batches (at most one per value), the sample standard deviation of their
   /// means over sqrt(batches); 0 for fewer than two. Successive steps of a marched case are strongly

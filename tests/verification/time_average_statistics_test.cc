@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <functional>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace servodrift::flow
@@ -351,5 +352,45 @@ namespace servodrift::flow
     EXPECT_EQ(capped_steps_held_by(a), "");
     a.unconverged_steps_held_by = {0, 2, 140, 17, 0};
     EXPECT_EQ(capped_steps_held_by(a), "continuity in 140, k in 17, v in 2");
+  }
+
+  // The verdict on a time average is one value with its reason, its checks in order: the steps
+  // solved (at most unconverged_steps_limit capped), the window spans the motion (lags_per_window
+  // lags), the means pinned down (relative standard errors within the limit; a NaN error is not).
+  TEST(PilotFieldTimeAverage, OneVerdictWithItsReason)
+  {
+    using Kind = TimeAverageVerdict::Kind;
+    const double limit = 5e-3;
+    TimeAverage a;
+    a.mean.discharge_coefficient = 0.6, a.mean.flapper_force = 0.3;
+    a.discharge_coefficient_spread = 0.01, a.flapper_force_spread = 0.005;
+    a.averaged_steps = 1000, a.decorrelation_steps = 200, a.unconverged_steps = 100;
+    a.discharge_coefficient_relative_uncertainty = 4e-3, a.flapper_force_relative_uncertainty = 1e-3;
+    a.averaged_time = 1e-4, a.time_step = 1e-7, a.courant_number = 0.5;
+    const TimeAverageVerdict good = time_average_verdict(a, limit);
+    EXPECT_TRUE(good.stands());
+    EXPECT_EQ(good.reason, "");
+
+    TimeAverage capped = a; // and its window too short: the first check is the verdict
+    capped.unconverged_steps = 101, capped.unconverged_steps_held_by[4] = 101, capped.decorrelation_steps = 201;
+    const TimeAverageVerdict steps = time_average_verdict(capped, limit);
+    EXPECT_EQ(steps.kind, Kind::steps_not_solved);
+    EXPECT_NE(steps.reason.find("101 of its 1000 averaged time steps"), std::string::npos) << steps.reason;
+
+    TimeAverage short_window = a;
+    short_window.decorrelation_steps = 201;
+    short_window.discharge_coefficient_relative_uncertainty = 1; // and uncertain: the window decides
+    const TimeAverageVerdict window = time_average_verdict(short_window, limit);
+    EXPECT_EQ(window.kind, Kind::window_too_short);
+    EXPECT_NE(window.reason.find("only after 201 steps"), std::string::npos) << window.reason;
+
+    TimeAverage uncertain = a;
+    uncertain.flapper_force_relative_uncertainty = 6e-3;
+    const TimeAverageVerdict mean = time_average_verdict(uncertain, limit);
+    EXPECT_EQ(mean.kind, Kind::mean_uncertain);
+    EXPECT_NE(mean.reason.find("0.6 % in the flapper force"), std::string::npos) << mean.reason;
+    EXPECT_NE(mean.reason.find("after 1000 averaged steps"), std::string::npos) << mean.reason;
+    uncertain.flapper_force_relative_uncertainty = std::nan("");
+    EXPECT_EQ(time_average_verdict(uncertain, limit).kind, Kind::mean_uncertain);
   }
 } // namespace servodrift::flow
