@@ -72,7 +72,7 @@ namespace servodrift::flow
   CaseOutcome FailedAttempts::outcome() const
   {
     if (!has_nearest) // as the last attempt failed: a stall of k-epsilon's solve is marched too
-      return {last.stall ? CaseOutcome::Kind::stalled : CaseOutcome::Kind::failed, {}, last.message, last.residuals};
+      return {last.k_epsilon_stalled ? CaseOutcome::Kind::stalled : CaseOutcome::Kind::failed, {}, last.message, last.residuals};
     if (count < 2 && nearest_rank != Rank::diverged_start)
       return {CaseOutcome::Kind::stalled, {}, nearest_message, nearest_residuals};
     return {CaseOutcome::Kind::stalled, {},
@@ -103,10 +103,7 @@ namespace servodrift::flow
       }
     catch (const NotConverged &e)
       {
-        AttemptOutcome o{AttemptOutcome::Kind::stalled, {}, e.what(), e.residuals};
-        o.level = field.solver().boundary_pressure("inlet");
-        o.stall = true;
-        return o;
+        return {AttemptOutcome::Kind::stalled, {}, e.what(), e.residuals, field.solver().boundary_pressure("inlet")};
       }
     catch (const std::runtime_error &e)
       {
@@ -188,7 +185,7 @@ namespace servodrift::flow
     if (start.kind != CaseOutcome::Kind::converged) // no state of model t: `slot' keeps the last attempt's
       {
         AttemptOutcome o{AttemptOutcome::Kind::failed_without_state, {}, start.message, start.residuals};
-        o.stall = start.kind == CaseOutcome::Kind::stalled;
+        o.k_epsilon_stalled = start.kind == CaseOutcome::Kind::stalled;
         return o;
       }
     c.turbulence = t;

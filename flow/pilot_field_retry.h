@@ -57,7 +57,7 @@ namespace servodrift::flow
     std::string message{};     ///< the failure's
     Residuals residuals{};     ///< stalled: at the stall
     double level = 0;          ///< stalled: the pressure level of its state [Pa]
-    bool stall = false;      ///< stalled, or failed_without_state because k-epsilon's solve stalled
+    bool k_epsilon_stalled = false; ///< failed_without_state: k-epsilon's solve stalled (else it diverged)
     /// Whether the attempt left a state of the case's model to march from.
     bool leaves_state() const { return kind == Kind::stalled || kind == Kind::diverged_from_start; }
   };

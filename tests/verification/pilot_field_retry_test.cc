@@ -39,9 +39,7 @@ namespace servodrift::flow
 
     AttemptOutcome stalled(const std::string &message, double continuity, double level = case_level)
     {
-      AttemptOutcome o{Kind::stalled, {}, message, stall_at(continuity), level};
-      o.stall = true;
-      return o;
+      return {Kind::stalled, {}, message, stall_at(continuity), level};
     }
 
     AttemptOutcome diverged(const std::string &message = "diverged") { return {Kind::diverged, {}, message}; }
@@ -228,7 +226,7 @@ namespace servodrift::flow
     FailedAttempts stall(case_level);
     fail(stall, "from the chain's last state", diverged());
     AttemptOutcome k_epsilon_stalled{Kind::failed_without_state, {}, "k-epsilon stalled", stall_at(0.3)};
-    k_epsilon_stalled.stall = true;
+    k_epsilon_stalled.k_epsilon_stalled = true;
     fail(stall, "from k-epsilon's solution", k_epsilon_stalled);
     EXPECT_FALSE(stall.has_state_to_march());
     EXPECT_EQ(stall.outcome().kind, CaseOutcome::Kind::stalled);
