@@ -120,7 +120,7 @@ int servodrift::bench::bench_orifice_march(int argc, char **argv)
         std::printf("  step %u capped: C_d %.4f, continuity %.3g, %u cells cavitating (%u changed); liquid imbalance "
                     "%.3g, largest %.3g at x %.4g mm, r %.4g mm (old liquid fraction %.4f, %u of %u neighbours "
                     "cavitating)\n",
-                    step, s.discharge_coefficient, s.step_residuals.continuity, cavitating, changed, w.sum, w.largest,
+                    step, s.discharge_coefficient, s.residuals.continuity, cavitating, changed, w.sum, w.largest,
                     1e3 * mesh.cell_center[w.cell][0], 1e3 * mesh.cell_center[w.cell][1], old.liquid_fraction[w.cell],
                     cavitating_neighbours, neighbours);
       }

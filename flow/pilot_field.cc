@@ -387,12 +387,14 @@ namespace servodrift::flow
       throw NotConverged(std::string("flow: ") + what + ": converged with the turbulent viscosity held at its limit (" +
                          format_number(d.settings.solution.turbulent_viscosity_limit) + " Re mu) in " +
                          std::to_string(report.cells_at_viscosity_limit) +
-                         " cells: not the model's solution; raise `Pilot stage/Field solution/Turbulent viscosity limit'");
+                         " cells: not the model's solution; raise `Pilot stage/Field solution/Turbulent viscosity limit'",
+                         report.residuals);
     const PilotFieldResult fields = d.result_of(dp, MeteredAt::outlet);
     const unsigned int iterations = r.iterations, coarse = r.coarse_mesh_iterations;
     const double relaxation = r.pressure_relaxation;
     r = fields;
     r.iterations = iterations, r.coarse_mesh_iterations = coarse, r.pressure_relaxation = relaxation;
+    r.residuals = report.residuals;
     return r;
   }
 
@@ -414,7 +416,7 @@ namespace servodrift::flow
     r.iterations = step.iterations;
     r.pressure_relaxation = step.pressure_relaxation;
     r.step_converged = step.converged;
-    r.step_residuals = step.residuals;
+    r.residuals = step.residuals;
     return r;
   }
 

@@ -59,7 +59,9 @@ namespace servodrift::flow
     unsigned int coarse_mesh_iterations = 0; ///< grid sequencing: iterations on the coarser meshes first
     /// time stepping (advance): the step met its tolerance within its iterations
     bool step_converged = true;
-    Residuals step_residuals; ///< time stepping (advance): the step's last iteration's scaled residuals
+    /// the last iteration's scaled residuals: solve, at the case's level (below the tolerance);
+    /// advance, the step's
+    Residuals residuals;
     double pressure_relaxation = 0; ///< the pressure relaxation the solve ended with (lowered by caught cycles) [1]
     FlowSolverParameters::Turbulence turbulence = FlowSolverParameters::Turbulence::laminar;
   };

@@ -127,6 +127,41 @@ namespace servodrift::flow
                               format_cell(r[flag])});
       write_file_atomically(flow_directory(valve) + "/" + name + "_time_averages" + variant + ".csv", doc.text());
     }
+
+    /// A note for each case flagged 2 (the table's rows do not say which model, state or fields):
+    /// where it is, its nearest steady state's largest scaled residual and the VTU of that state.
+    void add_unconverged_case_notes(Table &table, const ValveDescription &valve, PilotGeometry g,
+                                    const CaseRows &records)
+    {
+      const bool orifice = g == PilotGeometry::fixed_orifice;
+      for (const auto &r : records)
+        {
+          if (r[flag] != flags::not_converged)
+            continue;
+          std::string note = "flag 2 at " + format_number(r[temperature]) + " degC" +
+                             (orifice ? "" : ", gap " + format_number(r[gap] * 1e6) + " um") + ", dp " +
+                             format_number(r[pressure_difference] * 1e-6) + " MPa (" +
+                             model_name(Turbulence(int(r[model]))) + "): ";
+          if (r[state_level] < 0)
+            {
+              table.notes.push_back(note + "no attempt converged or left a state (each diverged)");
+              continue;
+            }
+          note += "no attempt converged; the nearest state";
+          if (r[state_level] == 0)
+            note += ", in the start-up from rest,";
+          else if (r[state_level] != r[pressure_difference])
+            note += ", at " + format_number(r[state_level] * 1e-6) + " MPa on the way to the case's level,";
+          if (r[state_residual_equation] >= 0)
+            note += " has a largest scaled residual of " + format_number(r[state_residual]) + " (" +
+                    residual_names[int(r[state_residual_equation])] + ")";
+          else
+            note += " is the start an attempt diverged from, its residuals not known";
+          if (writes_fields(valve, r[temperature]))
+            note += "; its fields in flow/" + vtu_name(g, r[temperature], r[gap], r[pressure_difference]);
+          table.notes.push_back(note);
+        }
+    }
   } // namespace
 
   std::string nozzle_mesh_error_note(const ValveDescription &valve)
@@ -168,7 +203,10 @@ namespace servodrift::flow
           "reduced-order C_d differ by more than a factor " +
           format_number(verified_discharge_factor) + "), 5 = no steady solution: the time average (" + name +
           "_time_averages.csv), 6 = they differ so in creeping flow (Re < " + format_number(creeping_reynolds_number) +
-          "), where the field level is the reference");
+          "), where the field level is the reference; the steady state a row stands on, the converged solution or a flag 2 "
+          "case's nearest state (the one in its VTU; empty: no attempt left one): its pressure difference (the case's, or "
+          "a level on the way to it), its largest scaled residual and that equation (empty: not known, as for the start "
+          "an attempt diverged from); a pressure difference of 0: a state of the start-up from rest");
       doc.columns.insert(doc.columns.end(), {"flow_model[-]",
                      "flow_rate[m^3/s]",
                      "discharge_coefficient[1]",
@@ -184,6 +222,9 @@ namespace servodrift::flow
                      "max_wall_y_plus[1]",
                      "max_turbulent_viscosity_ratio[1]",
                      "iterations[1]",
+                     "state_pressure_difference[Pa]",
+                     "largest_residual[1]",
+                     "largest_residual_equation[-]",
                      "wall_time[s]",
                      "flag[1]"});
       std::vector<std::pair<double, std::string>> datasets;
@@ -192,6 +233,7 @@ namespace servodrift::flow
           const bool converged =
             r[flag] == flags::computed || r[flag] == flags::beyond_verified || r[flag] == flags::time_averaged ||
             r[flag] == flags::field_reference;
+          const bool known = r[state_residual_equation] >= 0;
           auto cell = [&](double v, bool defined = true) { return defined ? format_cell(v) : std::string(); };
           doc.rows.push_back({cell(r[temperature]), cell(r[gap], !orifice), cell(r[pressure_difference]),
                               model_name(Turbulence(int(r[model]))), cell(r[flow_rate]), cell(r[discharge_coefficient]),
@@ -201,7 +243,9 @@ namespace servodrift::flow
                               cell(r[bore_pressure], !orifice && converged), cell(r[minimum_absolute_pressure], converged),
                               cell(r[cavitating], converged), cell(r[max_wall_y_plus], converged),
                               cell(r[max_turbulent_viscosity_ratio], converged),
-                              cell(r[iterations], converged), cell(r[wall_time]), cell(r[flag])});
+                              cell(r[iterations], converged), cell(r[state_level], r[state_level] >= 0),
+                              cell(r[state_residual], known), known ? residual_names[int(r[state_residual_equation])] : "",
+                              cell(r[wall_time]), cell(r[flag])});
           if (converged && writes_fields(valve, r[temperature]))
             datasets.emplace_back(datasets.size(), vtu_name(g, r[temperature], r[gap], r[pressure_difference]));
         }
@@ -250,6 +294,7 @@ namespace servodrift::flow
     table.notes.push_back("mesh resolution " + format_number(valve.pilot.field_mesh.resolution) +
                           ": the orifice's discretisation error is measured laminar only (Re_0 493: 0.11 % between "
                           "resolutions 1 and 1.4), not at k-epsilon's Reynolds numbers (doc/validation.md)");
+    add_unconverged_case_notes(table, valve, PilotGeometry::fixed_orifice, records);
     std::size_t next = 0;
     for (double T : valve.sweeps.table_temperatures)
       {
@@ -267,6 +312,7 @@ namespace servodrift::flow
   {
     Table table(schemas::nozzle_flapper);
     table.notes.push_back(nozzle_mesh_error_note(valve));
+    add_unconverged_case_notes(table, valve, PilotGeometry::nozzle_flapper, records);
     const auto gaps = scaled(valve.sweeps.field_gap_fractions, valve.pilot.null_gap);
     const auto dps = scaled(valve.sweeps.field_nozzle_pressure_fractions, span(valve));
     std::size_t next = 0;

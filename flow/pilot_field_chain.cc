@@ -50,6 +50,15 @@ namespace servodrift::flow
       record[iterations] = r.iterations;
     }
 
+    /// The steady state a row stands on: its pressure level [Pa], its largest scaled residual and
+    /// that equation's index.
+    void record_state(std::vector<double> &record, double level, const Residuals &r)
+    {
+      record[state_level] = level;
+      record[state_residual] = largest_residual(r);
+      record[state_residual_equation] = largest_residual_index(r);
+    }
+
     /// The table temperature whose cases go to VTU with `Output/Flow fields = reference'.
     double reference_table_temperature(const ValveDescription &valve)
     {
@@ -161,6 +170,7 @@ namespace servodrift::flow
     record[gap] = h;
     record[pressure_difference] = dp;
     record[model] = double(t);
+    record[state_level] = record[state_residual_equation] = -1;
     const OrificeState reduced = orifice ? closed_forms.fixed_orifice(dp) : closed_forms.nozzle(h, dp);
     record[reduced_discharge_coefficient] = reduced.discharge_coefficient;
     record[reduced_flapper_force] = reduced.flapper_force;
@@ -172,6 +182,7 @@ namespace servodrift::flow
     if (outcome.kind == CaseOutcome::Kind::converged)
       {
         record_result(record, outcome.result);
+        record_state(record, dp, outcome.result.residuals);
         record[flag] =
           computed_case_flag(record[discharge_coefficient], reduced.discharge_coefficient, record[reynolds_number]);
         last = slot->fields();
@@ -199,6 +210,10 @@ namespace servodrift::flow
         record[reynolds_number] = reduced.reynolds_number;
         record[flapper_force] = reduced.flapper_force;
         record[flag] = flags::not_converged;
+        if (outcome.kind == CaseOutcome::Kind::stalled && outcome.residuals_known)
+          record_state(record, outcome.level, outcome.residuals);
+        else if (outcome.kind == CaseOutcome::Kind::stalled)
+          record[state_level] = outcome.level;
         // the next case continues from the last converged fields, or starts up again
         if (last)
           slot->set_fields(*last);
@@ -227,7 +242,7 @@ namespace servodrift::flow
             std::fprintf(stderr, "  time step %u of %u, t %.4g s: C_d %.6f, flapper force %.6f N, %u iterations%s%s, largest "
                          "residual %s %.3g\n", step, planned, time, r.discharge_coefficient, r.flapper_force, r.iterations,
                          r.step_converged ? "" : " (capped)", r.cavitating ? ", cavitating" : "",
-                         residual_names[largest_residual_index(r.step_residuals)], largest_residual(r.step_residuals));
+                         residual_names[largest_residual_index(r.residuals)], largest_residual(r.residuals));
           else if (tenths && step % tenth == 0)
             std::fprintf(stderr, "servodrift: %s: time step %u of %u (t %.3g s), C_d %.4f\n", where.c_str(), step, planned,
                          time, r.discharge_coefficient);

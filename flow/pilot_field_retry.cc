@@ -63,6 +63,7 @@ namespace servodrift::flow
     has_nearest = true;
     nearest_rank = rank;
     nearest_residuals = residuals;
+    nearest_level = o.kind == AttemptOutcome::Kind::stalled ? o.level : case_level;
     nearest_message = o.message;
     nearest_description = description;
     nearest_fields = state;
@@ -72,13 +73,15 @@ namespace servodrift::flow
   CaseOutcome FailedAttempts::outcome() const
   {
     if (!has_nearest) // as the last attempt failed: a stall of k-epsilon's solve is marched too
-      return {last.k_epsilon_stalled ? CaseOutcome::Kind::stalled : CaseOutcome::Kind::failed, {}, last.message, last.residuals};
-    if (count < 2 && nearest_rank != Rank::diverged_start)
-      return {CaseOutcome::Kind::stalled, {}, nearest_message, nearest_residuals};
+      return {last.k_epsilon_stalled ? CaseOutcome::Kind::stalled : CaseOutcome::Kind::failed, {}, last.message,
+              last.residuals, last.level, last.k_epsilon_stalled};
+    const bool residuals_known = nearest_rank != Rank::diverged_start;
+    if (count < 2 && residuals_known)
+      return {CaseOutcome::Kind::stalled, {}, nearest_message, nearest_residuals, nearest_level, true};
     return {CaseOutcome::Kind::stalled, {},
             nearest_message + " (" + nearest_description + " of " + std::to_string(count) +
               (count == 1 ? " attempt: " : " attempts: ") + list + ")",
-            nearest_residuals};
+            nearest_residuals, nearest_level, residuals_known};
   }
 
   CaseOutcome run_ladder(const std::vector<Attempt> &ladder, const std::function<AttemptOutcome(Attempt)> &attempt,
@@ -184,7 +187,7 @@ namespace servodrift::flow
     const CaseOutcome start = solve_with_retry(k_epsilon, Turbulence::k_epsilon, h, dp, true);
     if (start.kind != CaseOutcome::Kind::converged) // no state of model t: `slot' keeps the last attempt's
       {
-        AttemptOutcome o{AttemptOutcome::Kind::failed_without_state, {}, start.message, start.residuals};
+        AttemptOutcome o{AttemptOutcome::Kind::failed_without_state, {}, start.message, start.residuals, start.level};
         o.k_epsilon_stalled = start.kind == CaseOutcome::Kind::stalled;
         return o;
       }

@@ -56,7 +56,7 @@ namespace servodrift::flow
     PilotFieldResult result{}; ///< converged
     std::string message{};     ///< the failure's
     Residuals residuals{};     ///< stalled: at the stall
-    double level = 0;          ///< stalled: the pressure level of its state [Pa]
+    double level = 0;          ///< stalled (failed_without_state: k-epsilon's stall): the pressure level of its state [Pa]
     bool k_epsilon_stalled = false; ///< failed_without_state: k-epsilon's solve stalled (else it diverged)
     /// Whether the attempt left a state of the case's model to march from.
     bool leaves_state() const { return kind == Kind::stalled || kind == Kind::diverged_from_start; }
@@ -74,7 +74,12 @@ namespace servodrift::flow
     } kind;
     PilotFieldResult result{}; ///< converged
     std::string message{};     ///< otherwise: why, with the list of attempts if there were several
-    Residuals residuals{};     ///< stalled: the nearest state's
+    Residuals residuals{};     ///< stalled: the nearest state's, where known
+    /// stalled: the pressure level of the nearest state [Pa] (the case's, or one on the way to it)
+    double level = 0;
+    /// stalled: `residuals' are the nearest state's (not so for a start that diverged: its
+    /// residuals in the case's model are not known)
+    bool residuals_known = false;
   };
 
   /// The failed attempts of one case, in order, and the state its time average marches from: the
@@ -130,6 +135,7 @@ namespace servodrift::flow
     std::string nearest_message;
     std::string nearest_description; ///< `the stall nearest a steady state', ...
     Residuals nearest_residuals;     ///< zero for a start: its model's residuals there are not known
+    double nearest_level = 0;        ///< [Pa]
     FlowFields nearest_fields;
     bool nearest_is_last = false; ///< no attempt came after the nearest
     unsigned int count = 0;

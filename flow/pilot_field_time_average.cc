@@ -230,7 +230,7 @@ namespace servodrift::flow
           if (!plan.averages(step))
             continue;
           if (!r.step_converged)
-            ++a.unconverged_steps, ++a.unconverged_steps_held_by[largest_residual_index(r.step_residuals)];
+            ++a.unconverged_steps, ++a.unconverged_steps_held_by[largest_residual_index(r.residuals)];
           Q.add(r.flow_rate), C_d.add(r.discharge_coefficient), Re.add(r.reynolds_number);
           force.add(r.flapper_force), land.add(r.land_force), jet.add(r.jet_force), bore.add(r.bore_pressure);
           C_d_series.push_back(r.discharge_coefficient), force_series.push_back(r.flapper_force);

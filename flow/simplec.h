@@ -48,8 +48,8 @@ namespace servodrift::flow
       : std::runtime_error(what)
       , residuals(at_stall)
     {}
-    /// where the iterations stopped; zero if they converged to a state that is not the model's
-    /// solution (a limiter held): how near a steady state the stall's fields are
+    /// where the iterations stopped (below the tolerance where they converged to a state that is
+    /// not the model's solution, a limiter held): how near a steady state the stall's fields are
     Residuals residuals;
   };
 

@@ -104,6 +104,8 @@ namespace servodrift::system
             time_averaged += row.back() == flags::time_averaged;
             field_reference += row.back() == flags::field_reference;
           }
+        for (const auto &note : table->notes) // the mesh's discretisation error, the unconverged cases
+          t.notes.push_back("tables/" + table->name() + ".csv: " + note);
         if (field_reference > 0)
           t.notes.push_back("tables/" + table->name() + ".csv: " + std::to_string(field_reference) + " of " +
                             std::to_string(table->rows.size()) +
@@ -112,7 +114,8 @@ namespace servodrift::system
         if (not_converged > 0)
           t.warnings.push_back("tables/" + table->name() + ".csv: " + std::to_string(not_converged) + " of " +
                                std::to_string(table->rows.size()) +
-                               " rows did not converge at the field level (flag 2): the reduced-order value stands in");
+                               " rows did not converge at the field level (flag 2): the reduced-order value stands in; "
+                               "the table's notes below name each case, its nearest state's residual and its fields");
         if (time_averaged > 0)
           t.warnings.push_back("tables/" + table->name() + ".csv: " + std::to_string(time_averaged) + " of " +
                                std::to_string(table->rows.size()) +

@@ -168,6 +168,8 @@ namespace servodrift::flow
     const CaseOutcome o = attempts.outcome();
     EXPECT_EQ(o.kind, CaseOutcome::Kind::stalled);
     EXPECT_EQ(o.residuals.continuity, 5e-3);
+    EXPECT_TRUE(o.residuals_known);
+    EXPECT_EQ(o.level, case_level); // the level its residuals are of (flow/*_cases.csv)
     EXPECT_EQ(o.message.rfind("near (the stall nearest a steady state of 5 attempts: ", 0), 0u) << o.message;
     EXPECT_NE(o.message.find("from the chain's last state stalled at largest residual 0.2; from rest stalled at "
                              "largest residual 0.005; from k-epsilon's solution diverged; from rest in smaller steps "
@@ -208,6 +210,8 @@ namespace servodrift::flow
     fail(on_the_way, "from k-epsilon's solution", diverged(), 3);
     EXPECT_FALSE(on_the_way.last_is_nearest());
     EXPECT_EQ(marker_of(on_the_way.nearest_state()), 2);
+    EXPECT_EQ(on_the_way.outcome().level, 10.3e6); // its residuals are of that level's problem
+    EXPECT_EQ(on_the_way.outcome().residuals.continuity, 0.1);
   }
 
   // No attempt left a state (every one diverged, or k-epsilon's solve failed): the case comes to
@@ -225,20 +229,23 @@ namespace servodrift::flow
 
     FailedAttempts stall(case_level);
     fail(stall, "from the chain's last state", diverged());
-    AttemptOutcome k_epsilon_stalled{Kind::failed_without_state, {}, "k-epsilon stalled", stall_at(0.3)};
+    AttemptOutcome k_epsilon_stalled{Kind::failed_without_state, {}, "k-epsilon stalled", stall_at(0.3), 7.3e6};
     k_epsilon_stalled.k_epsilon_stalled = true;
     fail(stall, "from k-epsilon's solution", k_epsilon_stalled);
     EXPECT_FALSE(stall.has_state_to_march());
     EXPECT_EQ(stall.outcome().kind, CaseOutcome::Kind::stalled);
     EXPECT_EQ(stall.outcome().message, "k-epsilon stalled");
+    EXPECT_TRUE(stall.outcome().residuals_known); // k-epsilon's stall's, the state its VTU holds
+    EXPECT_EQ(stall.outcome().level, 7.3e6);
+    EXPECT_FALSE(o.residuals_known);
   }
 
   // Launder-Sharma's orifice at 90 degC down the sweep's path: its own attempts stall on the way
   // (at 6.26 MPa, whose march diverged at its first step) and it diverges from k-epsilon's
   // solution, from which it settles when marched (bench_orifice_march 90). That start is the state
   // to march, ahead of stalls on the way but behind a stall at the case's level (the model's own
-  // state); the case comes to a stall (so that the chain marches it) with zero residuals, since
-  // model t's are not known there, even when it is the only attempt.
+  // state); the case comes to a stall (so that the chain marches it) at the case's level with
+  // residuals not known (zero), since model t's are not known there, even when it is the only attempt.
   TEST(PilotFieldRetry, AStartThatDivergedRanksBetweenStallsAtTheCaseLevelAndOnTheWay)
   {
     const AttemptOutcome start{Kind::diverged_from_start, {}, "diverged"};
@@ -252,6 +259,8 @@ namespace servodrift::flow
     const CaseOutcome marched = on_the_way.outcome();
     EXPECT_EQ(marched.kind, CaseOutcome::Kind::stalled);
     EXPECT_EQ(largest_residual(marched.residuals), 0);
+    EXPECT_FALSE(marched.residuals_known);
+    EXPECT_EQ(marched.level, case_level);
     EXPECT_EQ(marched.message, "diverged (its start from k-epsilon's solution, the state nearest a steady state of 3 "
                                "attempts: from the chain's last state stalled at largest residual 0.49 on the way, at "
                                "6.26 MPa; from rest in smaller steps stalled at largest residual 1.1 on the way, at "
@@ -263,6 +272,7 @@ namespace servodrift::flow
     EXPECT_FALSE(at_level.last_is_nearest());
     EXPECT_EQ(marker_of(at_level.nearest_state()), 1);
     EXPECT_EQ(at_level.outcome().residuals.continuity, 0.2);
+    EXPECT_TRUE(at_level.outcome().residuals_known);
 
     FailedAttempts alone(case_level);
     fail(alone, "from k-epsilon's solution", start, 4);

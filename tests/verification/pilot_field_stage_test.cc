@@ -1,6 +1,7 @@
 // The pilot stage's field sweep (flow/pilot_field_stage): unconverged cases become flagged rows, and
 // the fixed orifice's continuation path over temperature keeps the answer of a start from rest.
 #include "common/csv.h"
+#include "common/error.h"
 #include "common/table.h"
 #include "common/pilot_closed_forms.h"
 #include "flow/pilot_field.h"
@@ -22,12 +23,15 @@ namespace servodrift::flow
 {
   // A case that does not converge within the iteration limit becomes a flagged row (flag 2) that
   // carries the reduced-order value, never a silent number; no-flow rows are exact limits (flag 3).
+  // Each such case is named in a note of its table (and so in the report), with its nearest steady
+  // state's largest scaled residual, which flow/<geometry>_cases.csv lists too, and the VTU of that
+  // state; a stall's residual lies above the solver's tolerance (else it would have converged).
   TEST(PilotFieldStage, UnconvergedCasesAreFlaggedRows)
   {
     ValveDescription v = test::valve({"Sweeps/Table temperatures=40, 120", "Sweeps/Drift temperatures=40, 120",
                                       "Sweeps/Field orifice pressure fractions=0.5", "Sweeps/Field gap fractions=1",
                                       "Sweeps/Field nozzle pressure fractions=0.5", "Flow solver/Maximum iterations=20",
-                                      "Output/Flow fields=none"});
+                                      "Output/Flow fields=all"});
     const auto [orifice, nozzle] = compute_pilot_field_tables(v);
     const PilotClosedForms closed_forms(v, 40);
     ASSERT_EQ(orifice.rows.size(), 4u); // per temperature: dp = 0 and the case
@@ -44,6 +48,37 @@ namespace servodrift::flow
         flagged += row.back() == flags::not_converged;
       }
     EXPECT_EQ(flagged, 2u);
+
+    for (const auto &[table, name] : {std::pair{&orifice, "fixed_orifice"}, std::pair{&nozzle, "nozzle_flapper"}})
+      {
+        const std::string directory = v.output.directory + "/flow/";
+        std::ifstream file(directory + name + "_cases.csv");
+        std::ostringstream text;
+        text << file.rdbuf();
+        const CsvDocument cases = CsvDocument::parse(text.str());
+        std::size_t noted = 0;
+        for (const auto &row : cases.rows)
+          {
+            if (row.at(cases.column("flag[1]")) != "2")
+              continue;
+            const double residual = std::stod(row.at(cases.column("largest_residual[1]")));
+            const std::string equation = row.at(cases.column("largest_residual_equation[-]"));
+            EXPECT_GT(residual, v.flow_solver.tolerance) << name;
+            EXPECT_TRUE(std::isfinite(residual)) << name;
+            const double T = std::stod(row.at(cases.column("temperature[degC]")));
+            // the note: where, the residual as the CSV has it (both formatted from one number), the VTU
+            const auto note = std::find_if(table->notes.begin(), table->notes.end(), [&](const std::string &n) {
+              return n.rfind("flag 2 at " + format_number(T) + " degC", 0) == 0;
+            });
+            ASSERT_NE(note, table->notes.end()) << name << " at " << T << " degC: no note";
+            EXPECT_NE(note->find(format_number(residual) + " (" + equation + ")"), std::string::npos) << *note;
+            const std::size_t vtu = note->find("flow/");
+            ASSERT_NE(vtu, std::string::npos) << *note;
+            EXPECT_TRUE(std::ifstream(v.output.directory + "/" + note->substr(vtu))) << *note;
+            ++noted;
+          }
+        EXPECT_EQ(noted, 2u) << name;
+      }
   }
 
   // The nozzle table's note states the discretisation error that bench/bench_mesh_convergence wrote

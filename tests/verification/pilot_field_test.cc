@@ -218,18 +218,6 @@ namespace servodrift::flow
     EXPECT_THROW(orifice.solve(-1e5), InputError);
     EXPECT_THROW(orifice.solve(0), InputError);
   }
-  namespace
-  {
-    /// Lichtarowicz (E21) at a given Reynolds number: the field's own Re, so the comparison is at
-    /// the same velocity definition (E17)
-    double lichtarowicz(const ValveDescription &v, double reynolds_number)
-    {
-      return lichtarowicz_discharge_coefficient(reynolds_number,
-                                                v.pilot.fixed_orifice_length / v.pilot.fixed_orifice_diameter);
-    }
-
-  } // namespace
-
   // Laminar cavitating nozzle cases have more than one steady solution: RV-1's null gap at 120 degC
   // and 3.09 MPa (the sweep's lowest nozzle pressure) carried from its start-up (Re 300, 0.1 MPa) in
   // one step converges to C_dn 0.6043, with a cavity that chokes part of the curtain; carried in

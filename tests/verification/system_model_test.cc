@@ -1,6 +1,9 @@
 // The static whole-valve model on the reduced-order tables: symmetry, null, the pilot-stage figures
 // of model.md (C4, 2.5-2.7), the spool regimes, saturation, table ranges and the drift maps.
 #include "common/error.h"
+#include "common/output_files.h"
+#include "common/table.h"
+#include "system/stage_tables.h"
 #include "common/units.h"
 #include "system/stage_coefficients.h"
 #include "system/system_stage.h"
@@ -397,4 +400,30 @@ TEST(DriftMap, BetweenTableTemperaturesAsFromTablesEvery5K)
                        1.0, reference);
   EXPECT_CHECK_AT_MOST("x_v at i = 0, 12 table temperatures against 39 [% of the stroke]", 100 * displacement, 1.0,
                        reference);
+}
+
+// A field-level case that did not converge reaches the report: its table's flag 2 rows are a
+// warning, and the table's notes (which name each such case with its nearest state's residual and
+// its fields, flow/pilot_field_case_output.cc) are the report's notes, under the table's name.
+TEST(StageTables, AnUnconvergedRowIsAWarningAndItsTableNotesReachTheReport)
+{
+  const ValveDescription valve = test::valve({});
+  const std::string directory = test::write_reduced_order_tables(valve);
+  Table nozzle = Table::read(directory + "/nozzle_flapper.csv", "nozzle_flapper");
+  const auto computed = std::find_if(nozzle.rows.begin(), nozzle.rows.end(),
+                                     [](const auto &r) { return r.back() == flags::computed; });
+  ASSERT_NE(computed, nozzle.rows.end());
+  computed->back() = flags::not_converged;
+  const std::string note = "flag 2 at 40 degC, gap 40 um, dp 10.3 MPa (k-epsilon): no attempt converged";
+  nozzle.notes.push_back(note);
+  write_file_atomically(directory + "/nozzle_flapper.csv", nozzle.to_csv());
+
+  const StageTables tables = StageTables::read(directory, valve);
+  const auto has = [](const std::vector<std::string> &lines, const std::string &text) {
+    return std::any_of(lines.begin(), lines.end(), [&](const std::string &l) { return l.find(text) != std::string::npos; });
+  };
+  EXPECT_TRUE(has(tables.warnings, "tables/nozzle_flapper.csv: 1 of " + std::to_string(nozzle.rows.size()) +
+                                     " rows did not converge at the field level (flag 2)"));
+  EXPECT_TRUE(has(tables.notes, "tables/nozzle_flapper.csv: " + note));
+  EXPECT_FALSE(has(tables.warnings, "tables/fixed_orifice.csv"));
 }
