@@ -56,6 +56,11 @@ namespace servodrift
 
   bool MovedEntries::take(const std::string &path, const std::string &value, const std::string &where)
   {
+    if (const RetiredEntry *gone = retired_entry(path))
+      {
+        retired.push_back(retirement_warning(where, *gone));
+        return true;
+      }
     const RenamedEntry *entry = renamed_entry(path);
     if (entry == nullptr)
       {
@@ -78,6 +83,8 @@ namespace servodrift
                            shown_input(value) + " is not allowed; allowed: " + *pattern);
         warn_once(deprecation_warning(where, *entry));
       }
+    for (const auto &warning : retired)
+      warn_once(warning);
   }
 
   std::string without_moved_entries(const std::string &text, const std::string &file, MovedEntries &moved)
@@ -122,6 +129,8 @@ namespace servodrift
 
   std::string current_entry_path(const std::string &path, const std::string &where)
   {
+    if (const RetiredEntry *gone = retired_entry(path))
+      throw InputError(where + ": `" + gone->path + "' is no longer read (" + gone->why + ")");
     const RenamedEntry *moved = renamed_entry(path);
     if (moved == nullptr)
       return path;

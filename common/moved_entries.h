@@ -24,10 +24,12 @@ namespace servodrift
   class MovedEntries
   {
   public:
-    /// `path' set in the file at `where'; true (and the value kept) if it is a moved entry's old path
+    /// `path' set in the file at `where'; true (and the value kept) if it is a moved entry's old path,
+    /// or true (and the value dropped) if it is a retired entry
     bool take(const std::string &path, const std::string &value, const std::string &where);
-    /// Sets the values taken at their new paths. Throws InputError if the file also sets the new
-    /// path (one entry set twice under two names) or deal.II refuses the value.
+    /// Sets the values taken at their new paths, and warns of the retired entries set. Throws
+    /// InputError if the file also sets the new path (one entry set twice under two names) or
+    /// deal.II refuses the value.
     void apply(dealii::ParameterHandler &prm) const;
 
   private:
@@ -37,6 +39,7 @@ namespace servodrift
       std::string value, where;
     };
     std::vector<Value> values;
+    std::vector<std::string> retired; ///< the warnings of the retired entries taken
     std::set<std::string> set_paths;
   };
 

@@ -148,6 +148,9 @@ namespace servodrift
           if (const RenamedEntry *moved = renamed_entry(section + *entry))
             return at + "`" + moved->old_path + "' is now `" + moved->new_path +
                    "' (an included file is read as written: rename it there)";
+          if (const RetiredEntry *gone = retired_entry(section + *entry))
+            return at + "`" + gone->path + "' is no longer read (" + gone->why +
+                   "; an included file is read as written: remove it there)";
           return at + "no entry `" + shown_input(*entry) + "'" + where +
                  suggestion(*entry, declared_names(prm, path, false)) + list_hint;
         }
@@ -307,6 +310,11 @@ namespace servodrift
         {
           warn_once(deprecation_warning(where, *moved));
           apply_override(prm, moved->new_path + "=" + value);
+          return;
+        }
+      if (const RetiredEntry *gone = retired_entry(joined(sections) + "/" + key))
+        {
+          warn_once(retirement_warning(where, *gone));
           return;
         }
       for (std::size_t k = 1; k <= sections.size(); ++k)

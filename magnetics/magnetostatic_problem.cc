@@ -210,48 +210,52 @@ namespace servodrift::magnetics
     const double target = tolerance * stats.initial_residual;
     double r = residual_norm(solution);
     stats.start_residual = r;
+    bool chord_contracts = true;
 
-    // Chord iterations first: the factorisation of the last Jacobian (previous angle or current, often
-    // the same mesh position) is reused while it still contracts the residual at least tenfold per
-    // step; otherwise Newton takes over, with a fresh Jacobian every iteration.
-    while (r > target && have_factorization && stats.iterations < max_iterations)
-      {
-        Vector<double> step(rhs.size());
-        {
-          Eigen::Map<const Eigen::VectorXd> b(rhs.begin(), rhs.size());
-          const Eigen::VectorXd x = cholesky.solve(b);
-          check(cholesky, "a chord step");
-          std::copy(x.data(), x.data() + x.size(), step.begin());
-        }
-        constraints.distribute(step);
-        trial = solution;
-        trial += step;
-        const double r_trial = residual_norm(trial);
-        ++stats.iterations;
-        if (!(r_trial < 0.1 * r))
-          break; // rhs is the trial's: Newton's first assembly below is at the accepted iterate
-        solution = trial;
-        r = r_trial;
-      }
-
-    // Newton with backtracking line search on the residual norm (Armijo)
-    if (r > target)
-      assemble_system(solution, true);
+    // Chord steps on the last factorisation (the previous angle's or current's, often the same mesh
+    // position, or this solve's last Newton step's) while each cuts the residual at least tenfold;
+    // where one does not, a Newton step with a fresh Jacobian and a backtracking line search on the
+    // residual norm (Armijo), whose factorisation the chord steps then reuse. Near the solution a
+    // fresh factorisation contracts far more than tenfold, so one Newton step is followed by chord
+    // steps (a triangular solve and a residual each) instead of a factorisation per step.
     while (r > target)
       {
         if (stats.iterations >= max_iterations)
           throw std::runtime_error("magnetostatics: Newton did not converge in " + std::to_string(max_iterations) +
                                    " iterations (residual " + std::to_string(r / stats.initial_residual) +
                                    " of the initial one)");
+        if (have_factorization && chord_contracts)
+          {
+            Vector<double> step(rhs.size());
+            {
+              Eigen::Map<const Eigen::VectorXd> b(rhs.begin(), rhs.size());
+              const Eigen::VectorXd x = cholesky.solve(b);
+              check(cholesky, "a chord step");
+              std::copy(x.data(), x.data() + x.size(), step.begin());
+            }
+            constraints.distribute(step);
+            trial = solution;
+            trial += step;
+            const double r_trial = residual_norm(trial); // rhs is now the trial's
+            ++stats.iterations;
+            if (r_trial < 0.1 * r)
+              {
+                solution = trial;
+                r = r_trial;
+                continue;
+              }
+            chord_contracts = false;
+          }
+        assemble_system(solution, true);
         solve_linear_system(update);
-        have_factorization = true;
+        have_factorization = chord_contracts = true;
         ++stats.iterations;
         double alpha = 1, r_trial = 0;
         for (int halvings = 0;; ++halvings)
           {
             trial = solution;
             trial.add(alpha, update);
-            r_trial = residual_norm(trial);
+            r_trial = residual_norm(trial); // the last one evaluated is the accepted one: rhs is its residual
             if (r_trial <= (1 - 1e-4 * alpha) * r || halvings == 30)
               break;
             alpha /= 2;
@@ -260,8 +264,6 @@ namespace servodrift::magnetics
           throw std::runtime_error("magnetostatics: the Newton line search found no decrease of the residual");
         solution = trial;
         r = r_trial;
-        if (r > target)
-          assemble_system(solution, true);
       }
     stats.final_residual = r;
     return stats;
@@ -290,10 +292,12 @@ namespace servodrift::magnetics
   NewtonStatistics MagnetostaticProblem::solve(double current, double tolerance, unsigned int max_iterations)
   {
     // In a sweep over positions the solution before the move is a zeroth-order start; where virtual
-    // work left dA/ds and d2A/ds2 at this current, the second-order one (Taylor). RV-1's sweep: the
-    // starting residual 1.8e-2 of ||R(0)|| from the solution before, 7e-4 to first order, 2e-5 to
-    // second order; the chord steps then contract some 20x each on the older factorisation, so the
-    // second order saves one step in ten (doc/changes.md, issue 63: the torque motor).
+    // work left dA/ds and d2A/ds2 at this current, or the last solves at this current lie on a
+    // parabola, the second-order one (Taylor). RV-1's sweep: the starting residual 1.8e-2 of
+    // ||R(0)|| from the solution before, 7e-4 to first order, 2e-5 to second order from virtual
+    // work's derivatives (doc/changes.md, issue 63: the torque motor). Without virtual work's
+    // solves, the parabola's cut a temperature's Newton and chord steps from 181 to 162 (RV-1,
+    // 40 degC; virtual work's derivatives: 138, at two more solves per case).
     auto &d = *impl;
     if (d.tangent.known && d.tangent.current == current && d.tangent.position != d.s)
       {
@@ -301,7 +305,40 @@ namespace servodrift::magnetics
         d.solution = d.tangent.A;
         d.solution.add(ds, d.tangent.dA_ds, 0.5 * ds * ds, d.tangent.d2A_ds2);
       }
-    return impl->solve(current, tolerance, max_iterations);
+    const NewtonStatistics statistics = impl->solve(current, tolerance, max_iterations);
+    impl->remember_solve();
+    return statistics;
+  }
+
+  void MagnetostaticProblem::Implementation::remember_solve()
+  {
+    if (!solved.empty() && (solved.back().current != current || solved.back().position == s))
+      solved.clear(); // another current: its solves say nothing of this one's path; the same position: no step
+    if (solved.size() == 3)
+      solved.erase(solved.begin());
+    solved.push_back({s, current, solution});
+    if (solved.size() < 2)
+      return;
+    // Newton's divided differences about the newest point s2: P(s) = A2 + (s - s2) f21 + (s - s2)(s - s1) f210
+    const Solved &p2 = solved.back(), &p1 = solved[solved.size() - 2];
+    Vector<double> f21 = p2.A;
+    f21.add(-1, p1.A);
+    f21 /= p2.position - p1.position;
+    tangent.d2A_ds2.reinit(f21.size());
+    tangent.dA_ds = f21;
+    if (solved.size() == 3)
+      {
+        const Solved &p0 = solved.front();
+        Vector<double> f210 = p1.A;
+        f210.add(-1, p0.A);
+        f210 /= p1.position - p0.position; // f10
+        f210.sadd(-1, 1, f21);
+        f210 /= p2.position - p0.position;
+        tangent.dA_ds.add(p2.position - p1.position, f210);
+        tangent.d2A_ds2.add(2, f210);
+      }
+    tangent.A = p2.A;
+    tangent.position = p2.position, tangent.current = current, tangent.known = true;
   }
 
   unsigned int MagnetostaticProblem::n_dofs() const

@@ -8,10 +8,13 @@
 // pattern, and the symbolic factorisation of the sparse direct solver (CHOLMOD, through Eigen), are
 // computed once per mesh and reused for every position and current.
 //
-// The force (or torque) on the body comes by two independent methods:
+// The force (or torque) on the body comes by two methods:
 //  - the weighted (volume) Maxwell stress tensor, F = -w_d int_air T_M : grad V dA, with V the
 //    virtual velocity of the body extended smoothly into the air (4.1 item 2);
 //  - virtual work at constant current, dW'/ds by central differences of the coenergy W' (item 3).
+// With V the mesh's own motion the first is the exact derivative of the discrete coenergy, so the
+// second checks it (to its difference quotient's error) rather than estimating its discretisation
+// error.
 #include "magnetics/bh_curve.h"
 #include "common/gmsh_mesh.h"
 
@@ -77,12 +80,16 @@ namespace servodrift::magnetics
     double position() const;
 
     /// Solves at excitation current `current' [A] (coil current densities scale with it), starting
-    /// from the last solution, or, where virtual work at another position and this current left the
-    /// derivatives dA/ds and d2A/ds2, from their prediction at this position. Chord steps on the last
+    /// from the last solution, or, where the derivatives dA/ds and d2A/ds2 at this current are known
+    /// (from virtual work's central differences, else from the parabola through the last solves at
+    /// this current), from their prediction at this position. Chord steps on the last
     /// factorisation, then Newton with backtracking line search until ||R|| <= tolerance ||R(0)||.
     NewtonStatistics solve(double current, double tolerance = 1e-10, unsigned int max_iterations = 50);
 
     /// Weighted Maxwell stress tensor: torque [N*m] (rotation) or force [N] (translation) on the body.
+    /// V is the mesh's own motion, so this is Coulomb's virtual work: the exact derivative of the
+    /// discrete coenergy at fixed potentials, which is its total derivative since the coenergy is
+    /// stationary in them.
     double stress_tensor_force() const;
     /// Coenergy W' = w_d int int_0^H B dH' dA [J] of the last solve, as w_d (int J A - int w(B)),
     /// which equals it at the solution and is stationary there: its error is quadratic in the

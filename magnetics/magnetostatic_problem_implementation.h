@@ -94,7 +94,8 @@ namespace servodrift::magnetics
     void update_cell_geometry();
     std::map<double, double> source_norm;  ///< ||R(A = 0)|| per current: the scale of the tolerance
     /// The solution's derivatives in the position at one position and current, dA/ds and d2A/ds2,
-    /// from virtual work's central differences: a solve at another position and the same current
+    /// from virtual work's central differences or, without it, from the last three solves at that
+    /// current (their interpolating parabola): a solve at another position and the same current
     /// starts from the second-order prediction A + ds dA/ds + ds^2/2 d2A/ds2 instead of A
     /// (MagnetostaticProblem::solve).
     struct Tangent
@@ -103,6 +104,17 @@ namespace servodrift::magnetics
       double position = 0, current = 0;
       Vector<double> A, dA_ds, d2A_ds2;
     } tangent;
+    /// The last solves at the case's own position (not virtual work's beside it), newest last: at
+    /// most three, all at one current.
+    struct Solved
+    {
+      double position, current;
+      Vector<double> A;
+    };
+    std::vector<Solved> solved;
+    /// Records the solve just done and, from the solves at this current, the tangent by divided
+    /// differences: the secant through two, the parabola through three.
+    void remember_solve();
 
     // morphing: vertex displacement (Q1) extended into the morphing air by a Laplace solve
     FE_Q<2> fe_morph;

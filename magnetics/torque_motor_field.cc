@@ -123,14 +123,13 @@ namespace servodrift::magnetics
                                                 refinements);
   }
 
-  FieldTorque TorqueMotorFieldModel::torque(double angle, double current, bool virtual_work)
+  FieldTorque TorqueMotorFieldModel::torque(double angle, double current, bool virtual_work, double tolerance)
   {
     FieldTorque t;
-    const auto &tm = valve.torque_motor;
     fe->set_position(angle);
-    t.newton = fe->solve(current, tm.newton_tolerance);
+    t.newton = fe->solve(current, tolerance > 0 ? tolerance : valve.torque_motor.newton_tolerance);
     t.stress_tensor = fe->stress_tensor_force();
-    t.virtual_work = virtual_work ? fe->virtual_work_force(tm.virtual_work_step) : std::numeric_limits<double>::quiet_NaN();
+    t.virtual_work = virtual_work ? fe->virtual_work_force(virtual_work_step) : std::numeric_limits<double>::quiet_NaN();
     return t;
   }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Field level of the torque motor (model.md 4.1, D10): the planar FEM model of meshes/torque_motor.geo
 // at one temperature, with torque by the weighted Maxwell stress tensor and by virtual work.
+#include "common/units.h"
 #include "common/valve_description.h"
 #include "magnetics/magnetostatic_problem.h"
 
@@ -17,6 +18,20 @@ namespace servodrift::magnetics
     constexpr int armature = 1, pole_pieces = 2, magnet = 3, coil_upper_right = 4, coil_lower_right = 5, air = 6,
                   air_gap = 7, coil_upper_left = 8, coil_lower_left = 9;
   }
+
+  /// The stage's error estimate of a torque (its table's torque_error): the torque minus the torque
+  /// on a second mesh of this fraction of the resolution (twice the element size). The stress
+  /// tensor is the exact derivative of the discrete coenergy, so virtual work differs from it only
+  /// by its difference quotient's error, the same on every mesh; the coarser mesh's change tracks the
+  /// discretisation error instead (TorqueMotorField.TheErrorMeshEstimatesTheDiscretisationError...).
+  constexpr double error_mesh_resolution_ratio = 0.5;
+  /// The error mesh's solves stop at this residual reduction (or `Torque motor/Newton tolerance' if
+  /// looser): its torque then lies within 4e-8 of the largest torque of a solve to 1e-10 (RV-1's
+  /// sweep at 40 degC), far inside the change it estimates, and its solves take 0.82 x the steps.
+  constexpr double error_mesh_tolerance = 1e-8;
+  /// Virtual work's angle step d, [W'(theta + d) - W'(theta - d)]/(2d): the second method, a
+  /// verification of the stress tensor (model.md 4.1 item 3) [rad]
+  constexpr double virtual_work_step = 0.01 * units::degree;
 
   struct FieldTorque
   {
@@ -37,9 +52,10 @@ namespace servodrift::magnetics
                           unsigned int refinements = 0,
                           const std::function<void(std::map<int, Material> &)> &adjust_materials = {});
 
-    /// Torque at armature angle theta [rad] and differential current i [A]; the previous solution
-    /// is the Newton start. With `virtual_work' false the second method is skipped (NaN).
-    FieldTorque torque(double angle, double current, bool virtual_work = true);
+    /// Torque at armature angle theta [rad] and differential current i [A]; the previous solves are
+    /// the Newton start (MagnetostaticProblem::solve), which stops at `tolerance' (0: `Torque
+    /// motor/Newton tolerance'). Virtual work, the second method, only if asked (NaN otherwise).
+    FieldTorque torque(double angle, double current, bool virtual_work = false, double tolerance = 0);
 
     /// Mean |B_y| over the four working gaps of the last solution [T] (C10 calibration measure).
     double mean_gap_flux_density() const;

@@ -70,7 +70,7 @@ namespace servodrift::magnetics
       return false;
     }
 
-    constexpr std::size_t summary_length = 10; // a summary row; table rows have 6 entries
+    constexpr std::size_t summary_length = 11; // a summary row; table rows have 6 entries
 
     /// Which grid cases a temperature's field sweep solves, and which it takes from their mirror image.
     /// The motor is symmetric about its centre plane x = 0: the mesh is its right half mirrored, the
@@ -112,13 +112,15 @@ namespace servodrift::magnetics
     }
 
     /// One temperature of the field sweep: every angle and current on one mesh, each solve starting
-    /// from its neighbour's solution (currents outer, angles back and forth); the mirror images of
-    /// solved cases are not solved again (MirrorPlan).
+    /// from its neighbours' solutions (currents outer, angles back and forth); the mirror images of
+    /// solved cases are not solved again (MirrorPlan). Each case is solved again on the error mesh
+    /// (error_mesh_resolution_ratio): the table's torque_error is the torque minus the error mesh's.
     CaseRows field_case(const ValveDescription &valve, double T)
     {
       const auto start = std::chrono::steady_clock::now();
       const auto &sw = valve.sweeps;
       TorqueMotorFieldModel model(valve, T);
+      TorqueMotorFieldModel error_mesh(valve, T, error_mesh_resolution_ratio * valve.torque_motor.field_mesh_resolution);
       const std::size_t n_a = sw.motor_angles.size(), n_i = sw.motor_currents.size();
       const MirrorPlan plan = mirror_plan(valve, T);
       double newton = 0, gap_flux = std::nan(""), armature_flux = std::nan("");
@@ -130,9 +132,10 @@ namespace servodrift::magnetics
             if (plan.image_of[a * n_i + c] != MirrorPlan::solved)
               continue;
             const double theta = sw.motor_angles[a], i = sw.motor_currents[c];
-            const FieldTorque t = model.torque(theta, i, true);
+            const FieldTorque t = model.torque(theta, i);
             newton += t.newton.iterations;
-            raw[a * n_i + c] = {t.stress_tensor, t.virtual_work};
+            const double loose = std::max(error_mesh_tolerance, valve.torque_motor.newton_tolerance);
+            raw[a * n_i + c] = {t.stress_tensor, error_mesh.torque(theta, i, false, loose).stress_tensor};
             if (theta == 0 && i == 0)
               {
                 gap_flux = model.mean_gap_flux_density();
@@ -153,7 +156,7 @@ namespace servodrift::magnetics
       if (valve.torque_motor.paper_magnetic_spring)
         {
           const double tenth = 0.1 * units::degree;
-          secant = model.torque(tenth, 0.0, false).stress_tensor / tenth;
+          secant = model.torque(tenth, 0.0).stress_tensor / tenth;
         }
       const PaperMagneticSpring paper(valve, T, secant);
       CaseRows rows;
@@ -161,13 +164,13 @@ namespace servodrift::magnetics
         for (std::size_t c = 0; c < n_i; ++c)
           {
             const double theta = sw.motor_angles[a];
-            const double mst = raw[a * n_i + c][0], vw = raw[a * n_i + c][1];
-            // the table's torque is the stress tensor's; its error column the difference of the methods
-            rows.push_back({T, theta, sw.motor_currents[c], mst + paper.correction * theta, vw - mst, paper.flag});
+            const double torque = raw[a * n_i + c][0], on_error_mesh = raw[a * n_i + c][1];
+            rows.push_back(
+              {T, theta, sw.motor_currents[c], torque + paper.correction * theta, torque - on_error_mesh, paper.flag});
           }
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       rows.push_back({T, double(model.n_dofs()), double(model.problem().n_cells()), gap_flux, armature_flux, newton,
-                      double(n_a * n_i), double(plan.n_solved), seconds, 0.0});
+                      double(n_a * n_i), double(plan.n_solved), double(error_mesh.n_dofs()), seconds, 0.0});
       return rows;
     }
 
@@ -177,15 +180,17 @@ namespace servodrift::magnetics
       doc.comments = {"servodrift-output magnetics_field_summary",
                       "field-level torque motor per temperature: mesh size, working-gap flux density and largest "
                       "armature flux density at theta = 0, i = 0, Newton iterations (with chord steps), the table's cases "
-                      "and those solved (the others are mirror images: T(-theta, -i) = -T(theta, i)) and time",
+                      "and those solved (the others are mirror images: T(-theta, -i) = -T(theta, i)), the unknowns of "
+                      "the error mesh (half the resolution: the table's torque_error is the torque's change there) and time",
                       "producer " + producer_string("magnetics/field"), "parameters-sha256 " + valve.parameters_sha256};
       doc.columns = {"temperature[degC]", "unknowns[1]", "cells[1]", "mean_gap_flux_density[T]",
                      "max_armature_flux_density[T]", "newton_iterations[1]", "cases[1]", "solved_cases[1]",
-                     "wall_time[s]"};
+                     "error_mesh_unknowns[1]", "wall_time[s]"};
       for (const auto &r : summary)
         doc.rows.push_back({format_cell(r[0]), format_cell(r[1]), format_cell(r[2]),
                             std::isfinite(r[3]) ? format_cell(r[3]) : "", std::isfinite(r[4]) ? format_cell(r[4]) : "",
-                            format_cell(r[5]), format_cell(r[6]), format_cell(r[7]), format_cell(r[8])});
+                            format_cell(r[5]), format_cell(r[6]), format_cell(r[7]), format_cell(r[8]),
+                            format_cell(r[9])});
       const std::string dir = valve.output.directory + "/magnetics";
       prepare_output_directory(dir);
       write_file_atomically(dir + "/field_summary.csv", doc.text());

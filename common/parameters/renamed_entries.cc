@@ -48,6 +48,29 @@ namespace servodrift
     return nullptr;
   }
 
+  const std::vector<RetiredEntry> &retired_entries()
+  {
+    static const std::vector<RetiredEntry> list = {
+      {"Torque motor/Virtual work step",
+       "the field level's torque_error is now the change from a mesh of half the resolution, and virtual work, "
+       "which checks the stress tensor, is a verification with its own step"},
+    };
+    return list;
+  }
+
+  const RetiredEntry *retired_entry(const std::string &path)
+  {
+    for (const auto &entry : retired_entries())
+      if (entry.path == path)
+        return &entry;
+    return nullptr;
+  }
+
+  std::string retirement_warning(const std::string &where, const RetiredEntry &entry)
+  {
+    return "servodrift: warning: " + where + ": `" + entry.path + "' is no longer read (" + entry.why + "); ignored";
+  }
+
   std::string deprecation_warning(const std::string &where, const RenamedEntry &entry)
   {
     return "servodrift: warning: " + where + ": `" + entry.old_path + "' is deprecated; it is now `" +

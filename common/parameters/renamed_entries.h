@@ -21,4 +21,21 @@ namespace servodrift
 
   /// The one-line warning for a moved entry that `where' (a file and line, or a --set) still names
   std::string deprecation_warning(const std::string &where, const RenamedEntry &entry);
+
+  /// An entry no longer read: a description that sets it reads as one that does not, with a
+  /// one-line warning saying why (a run's results no longer depend on it).
+  struct RetiredEntry
+  {
+    std::string path; ///< "Subsection/.../Key"
+    std::string why;  ///< what took its place
+  };
+
+  /// Every retired entry
+  const std::vector<RetiredEntry> &retired_entries();
+
+  /// The retired entry at `path', or nullptr
+  const RetiredEntry *retired_entry(const std::string &path);
+
+  /// The one-line warning for a retired entry that `where' still sets
+  std::string retirement_warning(const std::string &where, const RetiredEntry &entry);
 } // namespace servodrift

@@ -107,9 +107,6 @@ namespace servodrift
                       "Gap between the armature and the coil regions (field model). [m]");
     prm.declare_entry("Air boundary radius", "0.3", Patterns::Double(0, 10),
                       "Radius of the air domain around the pivot; A_z = 0 on it (field model). [m]");
-    prm.declare_entry("Virtual work step", "0.01", Patterns::Double(1e-6, 1),
-                      "Angle step of the coenergy central differences of the virtual-work torque (4.1 "
-                      "item 3). [deg]");
     prm.declare_entry("Newton tolerance", "1e-10", Patterns::Double(1e-15, 1e-2),
                       "Newton stops when the residual has fallen by this factor from its value at "
                       "A_z = 0 (field model). [1]");

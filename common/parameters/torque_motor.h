@@ -57,7 +57,6 @@ namespace servodrift
     double coil_height;                  ///< [m]
     double coil_clearance;               ///< coil to armature [m]
     double air_boundary_radius;          ///< A_z = 0 on this circle [m]
-    double virtual_work_step;            ///< angle step of the coenergy differences [rad]
     double newton_tolerance;             ///< residual reduction [1]
     double coil_resistance;         ///< per coil at 20 degC (voltage drive, 1.20) [Ohm]
     double coil_resistance_temperature_coefficient; ///< alpha_Cu [1/degC]

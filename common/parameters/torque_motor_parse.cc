@@ -49,7 +49,6 @@ namespace servodrift
     coil_height = prm.get_double("Coil height");
     coil_clearance = prm.get_double("Coil clearance");
     air_boundary_radius = prm.get_double("Air boundary radius");
-    virtual_work_step = prm.get_double("Virtual work step") * 3.14159265358979323846 / 180;
     newton_tolerance = prm.get_double("Newton tolerance");
     coil_resistance = prm.get_double("Coil resistance");
     coil_resistance_temperature_coefficient = prm.get_double("Coil resistance temperature coefficient");

@@ -150,3 +150,40 @@ TEST(RenamedEntries, RefusesAmbiguousOrBadOldEntries)
             std::string::npos)
     << included;
 }
+
+// A retired entry (no longer read) in a PRM file, a JSON file or a --set: the valve reads as one
+// without it, with one warning line naming where it was and why; as a calibration's free parameter,
+// or in an included file (read as written), it is refused with one line.
+TEST(RenamedEntries, RetiredEntriesAreIgnoredWithAWarning)
+{
+  ASSERT_FALSE(retired_entries().empty());
+  const RetiredEntry &gone = retired_entries().front();
+  std::istringstream json(print_parameters("", {}, ParameterFormat::json));
+  boost::property_tree::ptree tree;
+  boost::property_tree::read_json(json, tree);
+  EXPECT_FALSE(declared(tree, gone.path + "/value")) << gone.path;
+  EXPECT_EQ(renamed_entry(gone.path), nullptr);
+
+  const std::string section = gone.path.substr(0, gone.path.find('/')), key = gone.path.substr(gone.path.find('/') + 1);
+  const std::string expected = load_valve_description("").parameters_sha256;
+  const std::string prm = write_file("retired.prm", "subsection " + section + "\n  set " + key + " = 0.02\nend\n");
+  const std::string js = write_file("retired.json", "{\"" + section + "\": {\"" + key + "\": \"0.02\"}}");
+  for (const auto &[source, where] : {std::pair{prm, prm + ":2"}, std::pair{js, js}})
+    {
+      testing::internal::CaptureStderr();
+      EXPECT_EQ(load_valve_description(source).parameters_sha256, expected) << source;
+      const std::string warnings = testing::internal::GetCapturedStderr();
+      EXPECT_NE(warnings.find(where + ": `" + gone.path + "' is no longer read ("), std::string::npos) << warnings;
+      EXPECT_EQ(std::count(warnings.begin(), warnings.end(), '\n'), 1) << warnings;
+    }
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(load_valve_description("", {gone.path + "=0.02"}).parameters_sha256, expected);
+  const std::string set_warnings = testing::internal::GetCapturedStderr();
+  EXPECT_NE(set_warnings.find("`" + gone.path + "' is no longer read"), std::string::npos) << set_warnings;
+
+  EXPECT_THROW(current_entry_path(gone.path, "--free"), InputError);
+  const std::string included = input_refusal([&] {
+    load_valve_description(write_file("includes.prm", "include " + prm + "\n"));
+  });
+  EXPECT_NE(included.find("is no longer read"), std::string::npos) << included;
+}
