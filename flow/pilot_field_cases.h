@@ -59,10 +59,9 @@ namespace servodrift::flow
       unconverged_steps, ///< of the averaged steps: those the step's iteration cap stopped (TimeAverage)
       decorrelation_steps, ///< the lag at which C_d's or the force's autocorrelation first falls to zero
       // the steady state the row stands on: the converged solution, or a flagged case's nearest
-      // state (the one in its VTU; CaseOutcome): its pressure level (-1: no state; 0: a
-      // state of the start-up from rest), its largest scaled
-      // residual (PilotFieldResult::residuals) and that equation's index in residual_names (-1: not
-      // known, as for a start that diverged)
+      // state (the one in its VTU; CaseOutcome): its pressure level (-1: no state; 0: a state of
+      // the start-up from rest), its largest scaled residual (PilotFieldResult::residuals) and that
+      // equation's index in residual_names (-1: not known, as for a start that diverged)
       state_level,
       state_residual,
       state_residual_equation,

@@ -82,8 +82,9 @@ namespace servodrift::magnetics
     /// Solves at excitation current `current' [A] (coil current densities scale with it), starting
     /// from the last solution, or, where the derivatives dA/ds and d2A/ds2 at this current are known
     /// (from virtual work's central differences, else from the parabola through the last solves at
-    /// this current), from their prediction at this position. Chord steps on the last
-    /// factorisation, then Newton with backtracking line search until ||R|| <= tolerance ||R(0)||.
+    /// this current), from their prediction at this position. Chord steps on the last factorisation
+    /// while each cuts the residual tenfold, else a Newton step with backtracking line search whose
+    /// factorisation the next chord steps use, until ||R|| <= tolerance ||R(0)||.
     NewtonStatistics solve(double current, double tolerance = 1e-10, unsigned int max_iterations = 50);
 
     /// Weighted Maxwell stress tensor: torque [N*m] (rotation) or force [N] (translation) on the body.
