@@ -19,5 +19,5 @@ if grep -q "^ *set Fixed-time study *= *true" "$work/out/parameters.prm"; then
 fi
 grep -q "^## Dynamics" "$work/out/report.md" || { echo "no Dynamics section in report.md"; exit 1; }
 if grep -rliE '(^|[^a-z])nan([^a-z]|$)' "$work/out" --include='*.csv' --include='*.json'; then echo "NaN in output"; exit 1; fi
-if grep -rl -- '-nan\|inf,' "$work/out" --include='*.csv'; then echo "non-finite value in output"; exit 1; fi
+if grep -rl --include='*.csv' -e '-nan' -e 'inf,' "$work/out"; then echo "non-finite value in output"; exit 1; fi
 echo "ok"
