@@ -148,6 +148,9 @@ namespace servodrift::flow
               continue;
             }
           note += "no attempt converged; the nearest state";
+          if (r[state_model] != r[model])
+            note += std::string(" (") + model_name(Turbulence(int(r[state_model]))) +
+                    "'s stall, from which the case's model was to start)";
           if (r[state_level] == 0)
             note += ", in the start-up from rest,";
           else if (r[state_level] != r[pressure_difference])

@@ -65,6 +65,7 @@ namespace servodrift::flow
       state_level,
       state_residual,
       state_residual_equation,
+      state_model, ///< the flow model of that state (Turbulence): the case's, or k-epsilon's stall
       record_length
     };
   } // namespace case_record

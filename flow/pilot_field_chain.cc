@@ -51,7 +51,7 @@ namespace servodrift::flow
     }
 
     /// The steady state a row stands on: its pressure level [Pa], its largest scaled residual and
-    /// that equation's index.
+    /// that equation's index (its flow model is the case's unless set otherwise).
     void record_state(std::vector<double> &record, double level, const Residuals &r)
     {
       record[state_level] = level;
@@ -169,7 +169,7 @@ namespace servodrift::flow
     record[temperature] = conditions.temperature;
     record[gap] = h;
     record[pressure_difference] = dp;
-    record[model] = double(t);
+    record[model] = record[state_model] = double(t);
     record[state_level] = record[state_residual_equation] = -1;
     const OrificeState reduced = orifice ? closed_forms.fixed_orifice(dp) : closed_forms.nozzle(h, dp);
     record[reduced_discharge_coefficient] = reduced.discharge_coefficient;
@@ -214,6 +214,8 @@ namespace servodrift::flow
           record_state(record, outcome.level, outcome.residuals);
         else if (outcome.kind == CaseOutcome::Kind::stalled)
           record[state_level] = outcome.level;
+        if (outcome.k_epsilon_state)
+          record[state_model] = double(Turbulence::k_epsilon);
         // the next case continues from the last converged fields, or starts up again
         if (last)
           slot->set_fields(*last);

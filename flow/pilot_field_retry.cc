@@ -74,7 +74,7 @@ namespace servodrift::flow
   {
     if (!has_nearest) // as the last attempt failed: a stall of k-epsilon's solve is marched too
       return {last.k_epsilon_stalled ? CaseOutcome::Kind::stalled : CaseOutcome::Kind::failed, {}, last.message,
-              last.residuals, last.level, last.k_epsilon_stalled};
+              last.residuals, last.level, last.k_epsilon_stalled, last.k_epsilon_stalled};
     const bool residuals_known = nearest_rank != Rank::diverged_start;
     if (count < 2 && residuals_known)
       return {CaseOutcome::Kind::stalled, {}, nearest_message, nearest_residuals, nearest_level, true};

@@ -80,6 +80,9 @@ namespace servodrift::flow
     /// stalled: `residuals' are the nearest state's (not so for a start that diverged: its
     /// residuals in the case's model are not known)
     bool residuals_known = false;
+    /// stalled: the nearest state is k-epsilon's stall, from which the case's model was to start
+    /// (no attempt of its own left one)
+    bool k_epsilon_state = false;
   };
 
   /// The failed attempts of one case, in order, and the state its time average marches from: the

@@ -236,8 +236,10 @@ namespace servodrift::flow
     EXPECT_EQ(stall.outcome().kind, CaseOutcome::Kind::stalled);
     EXPECT_EQ(stall.outcome().message, "k-epsilon stalled");
     EXPECT_TRUE(stall.outcome().residuals_known); // k-epsilon's stall's, the state its VTU holds
+    EXPECT_TRUE(stall.outcome().k_epsilon_state);
     EXPECT_EQ(stall.outcome().level, 7.3e6);
     EXPECT_FALSE(o.residuals_known);
+    EXPECT_FALSE(o.k_epsilon_state);
   }
 
   // Launder-Sharma's orifice at 90 degC down the sweep's path: its own attempts stall on the way
