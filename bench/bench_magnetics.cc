@@ -30,7 +30,7 @@ int servodrift::bench::bench_magnetics(int argc, char **argv)
 
   std::vector<double> setup, cold, warm;
   unsigned int dofs = 0, error_dofs = 0, cold_iterations = 0, warm_iterations = 0;
-  const double loose = std::max(magnetics::error_mesh_tolerance, valve.torque_motor.newton_tolerance);
+  const double loose = magnetics::error_mesh_tolerance(valve);
   for (int k = 0; k < repetitions; ++k)
     {
       const auto t0 = clock::now();

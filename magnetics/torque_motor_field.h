@@ -5,6 +5,7 @@
 #include "common/valve_description.h"
 #include "magnetics/magnetostatic_problem.h"
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <memory>
@@ -25,10 +26,14 @@ namespace servodrift::magnetics
   /// by its difference quotient's error, the same on every mesh; the coarser mesh's change tracks the
   /// discretisation error instead (TorqueMotorField.TheErrorMeshEstimatesTheDiscretisationError...).
   constexpr double error_mesh_resolution_ratio = 0.5;
-  /// The error mesh's solves stop at this residual reduction (or `Torque motor/Newton tolerance' if
-  /// looser): its torque then lies within 4e-8 of the largest torque of a solve to 1e-10 (RV-1's
-  /// sweep at 40 degC), far inside the change it estimates, and its solves take 0.82 x the steps.
-  constexpr double error_mesh_tolerance = 1e-8;
+  /// The residual reduction the error mesh's solves stop at: 1e-8, or `Torque motor/Newton
+  /// tolerance' if looser. Its torque then lies within 4e-8 of the largest torque of a solve to
+  /// 1e-10 (RV-1's sweep at 40 degC), far inside the change it estimates, and its solves take 0.82 x
+  /// the steps.
+  inline double error_mesh_tolerance(const ValveDescription &valve)
+  {
+    return std::max(1e-8, valve.torque_motor.newton_tolerance);
+  }
   /// Virtual work's angle step d, [W'(theta + d) - W'(theta - d)]/(2d): the second method, a
   /// verification of the stress tensor (model.md 4.1 item 3) [rad]
   constexpr double virtual_work_step = 0.01 * units::degree;

@@ -121,6 +121,7 @@ namespace servodrift::magnetics
       const auto &sw = valve.sweeps;
       TorqueMotorFieldModel model(valve, T);
       TorqueMotorFieldModel error_mesh(valve, T, error_mesh_resolution_ratio * valve.torque_motor.field_mesh_resolution);
+      const double error_tolerance = error_mesh_tolerance(valve);
       const std::size_t n_a = sw.motor_angles.size(), n_i = sw.motor_currents.size();
       const MirrorPlan plan = mirror_plan(valve, T);
       double newton = 0, gap_flux = std::nan(""), armature_flux = std::nan("");
@@ -134,8 +135,7 @@ namespace servodrift::magnetics
             const double theta = sw.motor_angles[a], i = sw.motor_currents[c];
             const FieldTorque t = model.torque(theta, i);
             newton += t.newton.iterations;
-            const double loose = std::max(error_mesh_tolerance, valve.torque_motor.newton_tolerance);
-            raw[a * n_i + c] = {t.stress_tensor, error_mesh.torque(theta, i, false, loose).stress_tensor};
+            raw[a * n_i + c] = {t.stress_tensor, error_mesh.torque(theta, i, false, error_tolerance).stress_tensor};
             if (theta == 0 && i == 0)
               {
                 gap_flux = model.mean_gap_flux_density();

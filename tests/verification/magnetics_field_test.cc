@@ -198,7 +198,7 @@ TEST(TorqueMotorField, StageMirrorsHalfItsCasesAsTheySolve)
         continue;
       ++mirrored;
       const double direct = model.torque(theta, i).stress_tensor;
-      const double on_error_mesh = error_mesh.torque(theta, i, false, error_mesh_tolerance).stress_tensor;
+      const double on_error_mesh = error_mesh.torque(theta, i, false, error_mesh_tolerance(v)).stress_tensor;
       torque_difference = std::max(torque_difference, std::abs(r[3] - direct) / largest);
       error_difference = std::max(error_difference, std::abs(r[4] - (direct - on_error_mesh)) / largest_error);
     }
