@@ -6,7 +6,7 @@
 #include "common/sweep.h"
 #include "common/valve_description.h"
 #include "common/version.h"
-#include "flow/pilot_stage.h"
+#include "flow/pilot/pilot_stage.h"
 #include "fmu/export_fmu.h"
 #include "magnetics/torque_motor_stage.h"
 #include "structure/spring_tube_stage.h"

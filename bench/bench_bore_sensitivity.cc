@@ -16,7 +16,7 @@
 #include "common/output_files.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
-#include "flow/pilot_stage.h"
+#include "flow/pilot/pilot_stage.h"
 #include "magnetics/torque_motor_stage.h"
 #include "structure/spring_tube_stage.h"
 #include "system/valve_model.h"

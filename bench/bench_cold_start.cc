@@ -1,6 +1,6 @@
 // Robustness of single field-level pilot cases started from rest (issue 28, item 6): the cases the
 // issue lists as failing and those that failed in a model's sweep since, each solved alone from rest on RV-1 (40 degC unless stated; no continuation from a
-// neighbouring case) on the flow stage's path (flow/pilot_field_cases.h's Chain: the case from rest
+// neighbouring case) on the flow stage's path (flow/pilot/pilot_field_cases.h's Chain: the case from rest
 // with its pressure continuation, once more with half the continuation steps if that fails, SST and
 // Launder-Sharma then from the two-layer k-epsilon's solution, and a case that still stalls marched in
 // time for its time average), with every flow model. Cases 28-31 are the sweep's stalled hot orifice
@@ -12,8 +12,8 @@
 // (extra arguments are `--set' entries, e.g. 'Flow solver/Report interval=100' for the residual history)
 #include "bench/benchmarks.h"
 #include "common/valve_description.h"
-#include "flow/pilot_field.h"
-#include "flow/pilot_field_cases.h"
+#include "flow/pilot/pilot_field.h"
+#include "flow/pilot/pilot_field_cases.h"
 
 #include <chrono>
 #include <cmath>

@@ -12,7 +12,7 @@
 #include "bench/time_it.h"
 #include "common/stage_output.h"
 #include "common/sweep.h"
-#include "flow/pilot_stage.h"
+#include "flow/pilot/pilot_stage.h"
 #include "magnetics/torque_motor_stage.h"
 #include "structure/spring_tube_stage.h"
 #include "system/dynamics.h"

@@ -9,7 +9,7 @@
 #include "common/gmsh_mesh.h"
 #include "common/output_files.h"
 #include "common/valve_description.h"
-#include "flow/simplec.h"
+#include "flow/fv/simplec.h"
 
 #include <algorithm>
 #include <chrono>

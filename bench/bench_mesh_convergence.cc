@@ -12,7 +12,7 @@
 #include "common/csv.h"
 #include "common/output_files.h"
 #include "common/valve_description.h"
-#include "flow/pilot_field.h"
+#include "flow/pilot/pilot_field.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Path dependence of a narrow-gap nozzle case (issue 28, item 6; doc/validation.md, "Robustness"):
 // one case of RV-1's default sweep solved on three paths with the default flow model, each in a
-// fresh continuation chain (flow/pilot_field_cases.h's Chain):
+// fresh continuation chain (flow/pilot/pilot_field_cases.h's Chain):
 //   rest       the case alone: pressure continuation from rest up to its pressure difference;
 //   neighbour  the flow stage's path: the next larger gap at the same pressure difference first,
 //              then this gap from its fields;
@@ -15,9 +15,9 @@
 // (defaults 50 degC, 10e-6 m, 3.09e6 Pa, 20e-6 m)
 #include "bench/benchmarks.h"
 #include "common/valve_description.h"
-#include "flow/pilot_field.h"
-#include "flow/pilot_field_cases.h"
-#include "flow/pilot_field_time_average.h"
+#include "flow/pilot/pilot_field.h"
+#include "flow/pilot/pilot_field_cases.h"
+#include "flow/pilot/pilot_field_time_average.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -7,8 +7,8 @@
 //   OMP_THREAD_LIMIT=1 build/bench/bench_newton [nozzle|orifice] [temperature degC] [dp Pa] [ratio] [CFL_0]
 #include "bench/benchmarks.h"
 #include "common/valve_description.h"
-#include "flow/pilot_field.h"
-#include "flow/simplec.h"
+#include "flow/pilot/pilot_field.h"
+#include "flow/fv/simplec.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,4 +1,4 @@
-// One temperature's nozzle-flapper chain as the flow stage runs it (flow/pilot_field_stage.cc, in
+// One temperature's nozzle-flapper chain as the flow stage runs it (flow/pilot/pilot_field_stage.cc, in
 // its gap order: the null gap, the smaller gaps downwards, then the larger ones upwards, each gap at
 // every nozzle pressure difference), up to and including the gap asked for. One line per case:
 // iterations, flag, C_dn, the flapper force and the wall time, the numbers of
@@ -9,7 +9,7 @@
 // (extra arguments are `--set' entries, e.g. 'Flow solver/Report interval=50' for the residuals)
 #include "bench/benchmarks.h"
 #include "common/valve_description.h"
-#include "flow/pilot_field_cases.h"
+#include "flow/pilot/pilot_field_cases.h"
 
 #include <cmath>
 #include <cstdio>

@@ -3,19 +3,19 @@
 // attempt and whose march from the nearest stall caps a sixth to a quarter of its steps
 // (`bench_cold_start 30', `31'), marched instead from the two-layer k-epsilon's converged solution of
 // the same case (k-epsilon's own chain: 1.03 MPa from rest, then 15.45 MPa), as the chain's time
-// average would march it (flow/pilot_field_time_average.h: its plan, gate and statistics). Prints
+// average would march it (flow/pilot/pilot_field_time_average.h: its plan, gate and statistics). Prints
 // the k-epsilon solution, every capped step (C_d, its continuity, the cavitating cells and how many
 // changed state within it, and the liquid cell of largest mass imbalance by the solver's own
 // measure: where, its neighbours' state) and the time average. Not a test (minutes).
 //   OMP_THREAD_LIMIT=1 build/bench/bench_orifice_march [T degC, default 100] [parameter=value ...]
 #include "bench/benchmarks.h"
 #include "common/valve_description.h"
-#include "flow/cavitation_model.h"
-#include "flow/continuity.h"
-#include "flow/fv_mesh.h"
-#include "flow/pilot_field.h"
-#include "flow/pilot_field_cases.h"
-#include "flow/pilot_field_time_average.h"
+#include "flow/fv/cavitation_model.h"
+#include "flow/fv/continuity.h"
+#include "flow/fv/fv_mesh.h"
+#include "flow/pilot/pilot_field.h"
+#include "flow/pilot/pilot_field_cases.h"
+#include "flow/pilot/pilot_field_time_average.h"
 
 #include <chrono>
 #include <cmath>
@@ -30,7 +30,7 @@ using namespace servodrift::flow;
 namespace
 {
   /// The liquid cell of largest mass imbalance and the sum over liquid cells, relative to the
-  /// throughput: the solver's own measures (flow/continuity.h) of the step's fields, its time
+  /// throughput: the solver's own measures (flow/fv/continuity.h) of the step's fields, its time
   /// derivative taken as implicit Euler from the previous step's liquid fractions (a locator: the
   /// solver's BDF2 weights after its first step differ).
   struct Imbalance

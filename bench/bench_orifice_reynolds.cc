@@ -9,7 +9,7 @@
 #include "bench/benchmarks.h"
 #include "common/valve_description.h"
 #include "common/pilot_closed_forms.h"
-#include "flow/pilot_field.h"
+#include "flow/pilot/pilot_field.h"
 
 #include <chrono>
 #include <cstdio>

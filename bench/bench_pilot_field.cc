@@ -12,7 +12,7 @@
 #include "bench/benchmarks.h"
 #include "bench/figures.h"
 #include "common/valve_description.h"
-#include "flow/pilot_field.h"
+#include "flow/pilot/pilot_field.h"
 
 #include <chrono>
 #include <cstdio>

@@ -60,7 +60,7 @@ namespace servodrift
     constexpr double limit = 3;         ///< an exact limit, not a solution (no flow: dp = 0 or a closed gap)
     constexpr double beyond_verified = 4; ///< a field value outside the range where the field level was
                                           ///< verified: it differs from the reduced-order value by more
-                                          ///< than the stage's stated factor (flow/pilot_field_stage.cc)
+                                          ///< than the stage's stated factor (flow/pilot/pilot_field_stage.cc)
     constexpr double time_averaged = 5;   ///< no steady solution: the time average of a time-accurate run
                                           ///< (its spread in flow/<geometry>_time_averages.csv)
     constexpr double field_reference = 6; ///< creeping flow (Re < 1, a cold oil) where the field value

@@ -1,7 +1,7 @@
 #pragma once
 // The pilot stage's field level (model.md 4.2, D11): its meshes, the settings of a steady case's
 // solution and of the time average of a case without one. Subsections of "Pilot stage"; together
-// with "Flow solver" they are what the finite-volume cases read (flow/pilot_field.h), not the whole
+// with "Flow solver" they are what the finite-volume cases read (flow/pilot/pilot_field.h), not the whole
 // valve description.
 #include <string>
 #include <vector>
@@ -48,7 +48,7 @@ namespace servodrift
   };
 
   /// Subsection "Pilot stage/Time average": a case without a steady solution marched in time and
-  /// reported by its mean (flow/pilot_field_time_average.h)
+  /// reported by its mean (flow/pilot/pilot_field_time_average.h)
   struct PilotTimeAverageParameters
   {
     static constexpr const char *subsection = "Time average";

@@ -1,18 +1,17 @@
 #!/usr/bin/env bash
-# The finite-volume solver's library (servodrift_fv, flow/CMakeLists.txt) knows nothing of the valve:
-# none of its sources, nor the headers of the same name, includes the valve description, the pilot
-# stage's parameters or the pilot stage's files. Usage: fv_knows_no_valve.sh <flow dir> <source>...
+# The finite-volume solver's library (servodrift_fv, flow/fv/) knows nothing of the valve: none of the
+# files of its directory includes the valve description, the pilot stage's parameters or the pilot
+# stage's files (flow/pilot/), and every source the library compiles is one of them.
+# Usage: fv_knows_no_valve.sh <flow/fv dir> <source>...
 set -euo pipefail
 dir=$1
 shift
-files=()
 for source in "$@"; do
-  files+=("$dir/$source")
-  header="$dir/${source%.cc}.h"
-  [ -f "$header" ] && files+=("$header")
+  [ -f "$dir/$(basename "$source")" ] || { echo "servodrift_fv compiles $source, which is not in $dir"; exit 1; }
 done
-if grep -nE '#include "(common/valve_description|common/parameters/pilot|common/pilot|flow/pilot)' "${files[@]}"; then
+files=("$dir"/*.h "$dir"/*.cc)
+if grep -nE '#include "(common/valve_description|common/parameters/pilot|common/pilot|flow/pilot/)' "${files[@]}"; then
   echo "the finite-volume solver includes the valve's or the pilot stage's headers (above)"
   exit 1
 fi
-echo "${#files[@]} files of servodrift_fv include nothing of the valve"
+echo "${#files[@]} files of servodrift_fv ($dir) include nothing of the valve"

@@ -8,7 +8,7 @@
 #   flow-field: `servodrift flow' at the field level. One rank computes the fixed orifice's first
 #     cases over temperature (one path, hottest first) beside the nozzle chains and hands their fields
 #     to the others; the orifice chains that go on from them are shared over the ranks
-#     (flow/pilot_field_stage.h). A small sweep on a coarse mesh: two temperatures, two
+#     (flow/pilot/pilot_field_stage.h). A small sweep on a coarse mesh: two temperatures, two
 #     orifice pressure levels (so each orifice chain goes on from the path's state), one gap at one
 #     pressure level; every case must converge.
 #   tolerances: `servodrift tolerances' on reduced-order tables (made once, serially): the valves of

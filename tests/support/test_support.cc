@@ -1,7 +1,7 @@
 #include "tests/support/test_support.h"
 
 #include "common/stage_output.h"
-#include "flow/pilot_stage.h"
+#include "flow/pilot/pilot_stage.h"
 #include "magnetics/torque_motor_stage.h"
 #include "structure/spring_tube_stage.h"
 #include "system/dynamics.h"

@@ -1,7 +1,7 @@
-// Anderson acceleration (flow/anderson_acceleration.h) on fixed-point maps whose answers are known:
+// Anderson acceleration (flow/fv/anderson_acceleration.h) on fixed-point maps whose answers are known:
 // a slow linear contraction (where it is GMRES in disguise and must beat the plain iteration by far)
 // and a nonlinear one; the fixed point must be the plain iteration's.
-#include "flow/anderson_acceleration.h"
+#include "flow/fv/anderson_acceleration.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// The symmetric Gauss-Seidel preconditioner (flow/gauss_seidel_preconditioner.h): it must apply
+// The symmetric Gauss-Seidel preconditioner (flow/fv/gauss_seidel_preconditioner.h): it must apply
 // exactly M^-1 = ((D + L) D^-1 (D + U))^-1 (checked against M formed densely), and on an upwind
 // convection-diffusion matrix like the flow solver's it must let BiCGSTAB reach the same solution as
 // a direct solve in fewer iterations than the Jacobi preconditioner.
-#include "flow/gauss_seidel_preconditioner.h"
+#include "flow/fv/gauss_seidel_preconditioner.h"
 
 #include <gtest/gtest.h>
 

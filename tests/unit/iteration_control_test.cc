@@ -1,9 +1,9 @@
-// The flow solver's iteration control (flow/iteration_control.h) on synthetic residual histories:
+// The flow solver's iteration control (flow/fv/iteration_control.h) on synthetic residual histories:
 // each test feeds the residuals a run would have and checks the verdict, the iteration it comes at,
 // the pressure relaxation, the switch to coupled iterations and the Anderson phases, against the
 // rules of the header (tolerance, divergence, monitors, cycle and stall windows, iteration limit).
 #include "common/valve_description.h"
-#include "flow/iteration_control.h"
+#include "flow/fv/iteration_control.h"
 
 #include <gtest/gtest.h>
 

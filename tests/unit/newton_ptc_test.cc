@@ -1,8 +1,8 @@
-// Newton-PTC (flow/newton_ptc.h) on small problems whose answers and behaviour are known, in
+// Newton-PTC (flow/fv/newton_ptc.h) on small problems whose answers and behaviour are known, in
 // milliseconds: a nonlinear system with an exact Jacobian (quadratic convergence once the pseudo step
 // has grown), one with no root (a stall, reported as a value), a start outside the problem's domain,
 // and a problem whose full Newton step leaves the domain (the step is halved, never taken).
-#include "flow/newton_ptc.h"
+#include "flow/fv/newton_ptc.h"
 
 #include <gtest/gtest.h>
 

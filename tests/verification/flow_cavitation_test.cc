@@ -1,4 +1,4 @@
-// Verification of the cavitation model's phase changes (flow/cavitation_model.h; doc/method.md,
+// Verification of the cavitation model's phase changes (flow/fv/cavitation_model.h; doc/method.md,
 // "Cavitation"), on three cells in a row with a prescribed flux through them (no solver: the model's
 // own rules, in closed form).
 //
@@ -10,8 +10,8 @@
 // its balance decides: as much mixture in as out, liquid again; more out than in, cavitating with
 // the mixture ratio of its balance with storage S = rho V/dt (implicit Euler, liquid before):
 // m = (in + S)/(out + S). A steady iteration returns it at once (no storage to hold its mass).
-#include "flow/cavitation_model.h"
-#include "flow/flow_state.h"
+#include "flow/fv/cavitation_model.h"
+#include "flow/fv/flow_state.h"
 #include "tests/support/checks.h"
 #include "tests/verification/flow_test_domains.h"
 

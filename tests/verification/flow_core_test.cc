@@ -1,4 +1,4 @@
-// Verification of the finite-volume solver core (flow/fv_mesh, flow/simplec) against closed forms
+// Verification of the finite-volume solver core (flow/fv/fv_mesh, flow/fv/simplec) against closed forms
 // and published data, issue 4. Tolerances are the issue's; doc/validation.md shows the checks the
 // tests record (tests/support/checks.h).
 //
@@ -15,9 +15,9 @@
 #include "common/gmsh_mesh.h"
 #include "common/output_files.h"
 #include "common/units.h"
-#include "flow/field_transfer.h"
-#include "flow/fv_mesh.h"
-#include "flow/simplec.h"
+#include "flow/fv/field_transfer.h"
+#include "flow/fv/fv_mesh.h"
+#include "flow/fv/simplec.h"
 #include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 #include "tests/verification/flow_test_domains.h"

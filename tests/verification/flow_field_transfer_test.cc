@@ -1,10 +1,10 @@
-// Verification of grid sequencing (flow/field_transfer): the transfer between meshes is bounded and
+// Verification of grid sequencing (flow/fv/field_transfer): the transfer between meshes is bounded and
 // exact on the same mesh, and a fine mesh started from a coarse one's fields lands on the answer of
 // the fine mesh from rest.
 #include "common/error.h"
-#include "flow/field_transfer.h"
-#include "flow/fv_mesh.h"
-#include "flow/simplec.h"
+#include "flow/fv/field_transfer.h"
+#include "flow/fv/fv_mesh.h"
+#include "flow/fv/simplec.h"
 #include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 #include "tests/verification/flow_test_domains.h"
@@ -18,7 +18,7 @@ namespace servodrift::flow
 {
   using namespace domains;
 
-  // Grid sequencing (flow/field_transfer): the transfer is a convex combination of the nearest
+  // Grid sequencing (flow/fv/field_transfer): the transfer is a convex combination of the nearest
   // source cells, so the same mesh maps onto itself exactly, a constant stays that constant, the
   // carried values stay within the source's range (k, epsilon >= 0, the liquid fraction in [0, 1]),
   // and a linear field is carried with an error below one source cell's change of it.

@@ -1,10 +1,10 @@
-// Newton-PTC (flow/newton_flow.cc) solves the steady discrete equations of SIMPLEC as one system:
+// Newton-PTC (flow/fv/newton_flow.cc) solves the steady discrete equations of SIMPLEC as one system:
 // started from SIMPLEC's own path partway (a scaled residual of 1e-2), with the limiter live it must
 // land on SIMPLEC's fields converged to 1e-10 (both within about 1e-9 of the discrete solution: 1e-7
 // leaves room for the different last steps), and converge to 1e-10 itself. With the limiter held
 // below 1e-5 it solves the held limiter's equations: within 1e-4 (the limiter frozen at a state 1e-5
 // from the solution moves the fields by up to 3e-5 here).
-#include "flow/simplec.h"
+#include "flow/fv/simplec.h"
 #include "flow_test_domains.h"
 #include "tests/support/checks.h"
 

@@ -1,14 +1,14 @@
-// Verification of the flow solver's control of a run (flow/simplec, flow/iteration_control; issue 4):
+// Verification of the flow solver's control of a run (flow/fv/simplec, flow/iteration_control; issue 4):
 // bad input refused with messages naming what to fix, a run that reaches its iteration limit or
 // stalls fails naming why (or goes on coupled), and a diverging run stops naming its iteration with
 // its fields written. The iteration control's own state machine is unit-tested
 // (tests/unit/iteration_control_test.cc).
 #include "common/error.h"
 #include "common/units.h"
-#include "flow/boundary_conditions.h"
-#include "flow/fv_matrix.h"
-#include "flow/fv_mesh.h"
-#include "flow/simplec.h"
+#include "flow/fv/boundary_conditions.h"
+#include "flow/fv/fv_matrix.h"
+#include "flow/fv/fv_mesh.h"
+#include "flow/fv/simplec.h"
 #include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 #include "tests/verification/flow_test_domains.h"

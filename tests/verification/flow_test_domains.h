@@ -4,8 +4,8 @@
 // solver settings of the built-in valve to a tolerance, and the pipe's boundary conditions.
 #include "common/gmsh_mesh.h"
 #include "common/output_files.h"
-#include "flow/fv_mesh.h"
-#include "flow/simplec.h"
+#include "flow/fv/fv_mesh.h"
+#include "flow/fv/simplec.h"
 #include "tests/support/test_support.h"
 
 #include <map>

@@ -1,4 +1,4 @@
-// Verification of the flow solver's time stepping (flow/time_stepping.cc, BDF2; issue 28,
+// Verification of the flow solver's time stepping (flow/fv/time_stepping.cc, BDF2; issue 28,
 // item 6: the time average of a case without a steady solution), laminar and turbulent.
 //
 // Start-up of creeping pipe flow under a pressure difference applied at t = 0 (Szymanski 1932): the
@@ -12,9 +12,9 @@
 // first step implicit Euler) is second order in time: the observed order of the differences between
 // dt = 0.01, 0.005 and 0.0025 at t = 0.2 R^2/nu on the same mesh (free of the mesh's error) must lie
 // between 1.7 and 2.3.
-#include "flow/cavitation_model.h"
-#include "flow/continuity.h"
-#include "flow/simplec.h"
+#include "flow/fv/cavitation_model.h"
+#include "flow/fv/continuity.h"
+#include "flow/fv/simplec.h"
 #include "tests/support/checks.h"
 #include "tests/verification/flow_test_domains.h"
 
@@ -157,7 +157,7 @@ namespace servodrift::flow
   }
 
   // In a time step a liquid cell's mass balance holds the change of its mass since the old levels
-  // (flow/continuity.h): a cell whose old levels held vapour and that is liquid now must take in
+  // (flow/fv/continuity.h): a cell whose old levels held vapour and that is liquid now must take in
   // rho V (new_weight - old_mass)/dt, the collapsed vapour's volume. Without that term the pressure
   // correction drove its fluxes to balance while the liquid fraction kept the old mass, and cavitating
   // steps stopped at their cap with continuity at a fixed 2e-4-7e-4 (doc/changes.md, issue 28:

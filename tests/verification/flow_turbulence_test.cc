@@ -3,8 +3,8 @@
 // fields in the VTU; Launder-Sharma below transition stays laminar. doc/validation.md shows the checks
 // the tests record (tests/support/checks.h).
 #include "common/error.h"
-#include "flow/fv_mesh.h"
-#include "flow/simplec.h"
+#include "flow/fv/fv_mesh.h"
+#include "flow/fv/simplec.h"
 #include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 #include "tests/verification/flow_test_domains.h"

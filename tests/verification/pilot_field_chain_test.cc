@@ -1,4 +1,4 @@
-// Verification of the flow stage's paths to a case (flow/pilot_field_cases.h's Chain; issue 28,
+// Verification of the flow stage's paths to a case (flow/pilot/pilot_field_cases.h's Chain; issue 28,
 // item 6): the retry from the two-layer k-epsilon's solution for the models less robust than it
 // (Chain::solve_from_k_epsilon), Launder-Sharma's hot nozzle from rest, the liquid check of a case
 // started from another gap's cavitating fields, a march from given fields against the march of
@@ -17,9 +17,9 @@
 // there), within 0.5 % of k-epsilon's (both follow Nurick within 0.2 %), and SST's own iterations
 // counted on top of k-epsilon's (more than k-epsilon's alone).
 #include "common/table.h"
-#include "flow/pilot_field.h"
-#include "flow/pilot_field_cases.h"
-#include "flow/pilot_field_time_average.h"
+#include "flow/pilot/pilot_field.h"
+#include "flow/pilot/pilot_field_cases.h"
+#include "flow/pilot/pilot_field_time_average.h"
 #include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 

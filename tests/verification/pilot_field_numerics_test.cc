@@ -1,9 +1,9 @@
-// The pilot stage's field cases as numerics (flow/pilot_field): the answer must not depend on how it
+// The pilot stage's field cases as numerics (flow/pilot/pilot_field): the answer must not depend on how it
 // was reached. A caught cycle against a run that never cycles, grid sequencing against the start-up
 // ladder, the linear solver options against each other, the turbulent viscosity limit, the nozzle's
 // stall window. test::valve() is RV-1, laminar unless a test sets a model, solver tolerance 1e-6.
 #include "common/error.h"
-#include "flow/pilot_field.h"
+#include "flow/pilot/pilot_field.h"
 #include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 #include "tests/verification/pilot_field_test_cases.h"

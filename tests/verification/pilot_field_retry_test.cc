@@ -1,4 +1,4 @@
-// The retry ladder of the flow stage as data (flow/pilot_field_retry.h), against a scripted fake
+// The retry ladder of the flow stage as data (flow/pilot/pilot_field_retry.h), against a scripted fake
 // case: which attempts a case gets (retry_ladder), the one driver that runs them until one converges
 // (run_ladder), and the ranking of the failed ones (FailedAttempts): the state nearest a steady state
 // is the one its time average marches from, a stall at the case's level, else k-epsilon's solution
@@ -10,7 +10,7 @@
 // Nothing is solved: each attempt's outcome is scripted, and its state is a field marked in its
 // first cell's u (1, 2, 3, ...), so that which state the ranking keeps can be read back exactly.
 // The whole file runs in milliseconds; the ladder's real paths are pilot_field_chain_test.cc's.
-#include "flow/pilot_field_retry.h"
+#include "flow/pilot/pilot_field_retry.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
-// The pilot stage's field sweep (flow/pilot_field_stage): unconverged cases become flagged rows, and
+// The pilot stage's field sweep (flow/pilot/pilot_field_stage): unconverged cases become flagged rows, and
 // the fixed orifice's continuation path over temperature keeps the answer of a start from rest.
 #include "common/csv.h"
 #include "common/error.h"
 #include "common/table.h"
 #include "common/pilot_closed_forms.h"
-#include "flow/pilot_field.h"
-#include "flow/pilot_field_cases.h"
-#include "flow/pilot_field_stage.h"
+#include "flow/pilot/pilot_field.h"
+#include "flow/pilot/pilot_field_cases.h"
+#include "flow/pilot/pilot_field_stage.h"
 #include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 

@@ -1,4 +1,4 @@
-// Field level of the pilot stage (flow/pilot_field, issue 5): the axisymmetric fixed orifice and
+// Field level of the pilot stage (flow/pilot/pilot_field, issue 5): the axisymmetric fixed orifice and
 // nozzle-flapper cases of RV-1 at 40 degC on their default meshes, as physics (their numerics:
 // pilot_field_numerics_test.cc; the stage's sweep: pilot_field_stage_test.cc).
 // - the meshes resolve what the issue asks: 30 cells across the bore radius, 20 across the gap;
@@ -14,7 +14,7 @@
 #include "common/error.h"
 #include "common/units.h"
 #include "common/pilot_closed_forms.h"
-#include "flow/pilot_field.h"
+#include "flow/pilot/pilot_field.h"
 #include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 #include "tests/verification/pilot_field_test_cases.h"
@@ -141,7 +141,7 @@ namespace servodrift::flow
     // fitted above Re 10) overestimates by 40 %. The superposition is itself approximate: numerical
     // creeping flows through short pores (L/D 0.1, 0.37) have 5-6 % less resistance. Checked at Re_0
     // about 0.2 and 4: within 6 % of the creeping limit, and the same within 0.5 % at both (inertia
-    // does not yet count at Re 4: flow/pilot_field_cases.h's creeping Reynolds number).
+    // does not yet count at Re 4: flow/pilot/pilot_field_cases.h's creeping Reynolds number).
     const ValveDescription v = test::valve();
     const double T = -55;
     const PilotClosedForms closed_forms(v, T);

@@ -1,7 +1,7 @@
 #pragma once
 // RV-1's pilot-stage field cases that several verification files solve: the nozzle at its null
 // conditions and the laminar fixed orifice, each from rest.
-#include "flow/pilot_field.h"
+#include "flow/pilot/pilot_field.h"
 
 namespace servodrift::flow::test_cases
 {

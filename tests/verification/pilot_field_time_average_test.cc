@@ -1,5 +1,5 @@
 // Verification of the time average that stands for a field-level pilot case without a steady
-// solution (flow/pilot_field_time_average.h; issue 28, item 6), on RV-1's nozzle-flapper gap at 40
+// solution (flow/pilot/pilot_field_time_average.h; issue 28, item 6), on RV-1's nozzle-flapper gap at 40
 // um and 0.1 MPa (Re_n 36: laminar and steady), where the answer is known: the steady solution.
 // - Marched from its converged steady fields, the case stays there: each step's implicit equations
 //   are converged to scaled residuals of 1e-4, so the mean may differ from the steady C_dn and force
@@ -22,10 +22,10 @@
 // it) are verified on series with known answers in time_average_statistics_test.cc.
 #include "common/table.h"
 #include "common/units.h"
-#include "flow/fv_mesh.h"
-#include "flow/pilot_field_cases.h"
-#include "flow/pilot_field_time_average.h"
-#include "flow/simplec.h"
+#include "flow/fv/fv_mesh.h"
+#include "flow/pilot/pilot_field_cases.h"
+#include "flow/pilot/pilot_field_time_average.h"
+#include "flow/fv/simplec.h"
 #include "tests/verification/flow_test_domains.h"
 #include "tests/support/checks.h"
 #include "tests/support/test_support.h"

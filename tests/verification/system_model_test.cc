@@ -404,7 +404,7 @@ TEST(DriftMap, BetweenTableTemperaturesAsFromTablesEvery5K)
 
 // A field-level case that did not converge reaches the report: its table's flag 2 rows are a
 // warning, and the table's notes (which name each such case with its nearest state's residual and
-// its fields, flow/pilot_field_case_output.cc) are the report's notes, under the table's name.
+// its fields, flow/pilot/pilot_field_case_output.cc) are the report's notes, under the table's name.
 TEST(StageTables, AnUnconvergedRowIsAWarningAndItsTableNotesReachTheReport)
 {
   const ValveDescription valve = test::valve({});

@@ -1,4 +1,4 @@
-// Verification of the statistics of a time average (flow/pilot_field_time_average.h; issue 28, item
+// Verification of the statistics of a time average (flow/pilot/pilot_field_time_average.h; issue 28, item
 // 6) on series whose answers are known in closed form, like the correlated steps of a marched case:
 // - the uncertainty of a mean, the standard error by batch means, on AR(1) series x_t = phi x_(t-1)
 //   + e_t and on sines;
@@ -9,7 +9,7 @@
 //   motion, driven as time_average drives it (average_by_plan).
 // The time average of real pilot cases: pilot_field_time_average_test.cc. doc/validation.md shows the
 // checks the tests record (tests/support/checks.h).
-#include "flow/pilot_field_time_average.h"
+#include "flow/pilot/pilot_field_time_average.h"
 #include "tests/support/checks.h"
 
 #include <gtest/gtest.h>

@@ -13,10 +13,10 @@
 #include "common/error.h"
 #include "common/gmsh_mesh.h"
 #include "common/output_files.h"
-#include "flow/fv_mesh.h"
+#include "flow/fv/fv_mesh.h"
 #include "common/pilot_closed_forms.h"
-#include "flow/pilot_field.h"
-#include "flow/simplec.h"
+#include "flow/pilot/pilot_field.h"
+#include "flow/fv/simplec.h"
 #include "tests/support/checks.h"
 #include "tests/support/test_support.h"
 
