@@ -352,7 +352,7 @@ int main(int argc, char **argv)
       setenv("OMP_THREAD_LIMIT", "1", 1);
       execv("/proc/self/exe", argv); // returns only on failure: then run with the threads
     }
-  servodrift::prefer_isolated_mpi_singleton();
+  servodrift::prepare_mpi_singleton();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {

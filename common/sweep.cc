@@ -18,10 +18,12 @@
 
 namespace servodrift
 {
-  void prefer_isolated_mpi_singleton()
+  void prepare_mpi_singleton()
   {
-    if (std::getenv("OMPI_COMM_WORLD_SIZE") == nullptr) // not started by mpirun
-      ::setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+    if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr) // started by mpirun: its settings stand
+      return;
+    ::setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+    ::setenv("OMPI_MCA_pml", "^cm", 0);
   }
 
   unsigned int mpi_rank()

@@ -31,11 +31,16 @@ namespace servodrift
     std::chrono::steady_clock::time_point start, last_print;
   };
 
-  /// Call before MPI is initialised. A process that mpirun did not start is an Open MPI singleton,
-  /// which starts a daemon of its own (about 0.1 s) that only spawning processes would need, and
-  /// servodrift spawns none: it is asked to run isolated (MCA `ess_singleton_isolated'), unless
-  /// the environment says otherwise. Other MPI implementations ignore the variable.
-  void prefer_isolated_mpi_singleton();
+  /// Call before MPI is initialised. A process that mpirun did not start is an Open MPI singleton:
+  /// it has no peer, so unless the environment says otherwise it is asked
+  /// - to run isolated (MCA `ess_singleton_isolated'): no daemon of its own (about 0.1 s), which
+  ///   only spawning processes would need, and servodrift spawns none;
+  /// - to leave out the cm point-to-point layer (MCA `pml ^cm'): its MTL components psm and psm2
+  ///   load libinfinipath and libpsm2, whose constructors each sleep 0.1 s to calibrate a clock
+  ///   (cornelisnetworks/opa-psm2#73), for an interconnect a singleton never uses. MPI_Init with
+  ///   MPI_Finalize: 0.23 -> 0.03 s, in every test process and every command-line run.
+  /// Other MPI implementations ignore the variables.
+  void prepare_mpi_singleton();
 
   using CaseRows = std::vector<std::vector<double>>;
 

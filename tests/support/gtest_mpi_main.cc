@@ -61,7 +61,7 @@ int main(int argc, char **argv)
     return RUN_ALL_TESTS();
   }
   const PrivateMpiSessionDirectory session; // before MPI_Init, removed after MPI_Finalize
-  servodrift::prefer_isolated_mpi_singleton();
+  servodrift::prepare_mpi_singleton();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   ::testing::InitGoogleTest(&argc, argv);
   const int result = RUN_ALL_TESTS();
