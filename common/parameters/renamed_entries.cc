@@ -1,7 +1,20 @@
 #include "common/parameters/renamed_entries.h"
 
+#include <algorithm>
+
 namespace servodrift
 {
+  namespace
+  {
+    /// The entry of `list' whose `key' is `path', or nullptr.
+    template <typename Entry>
+    const Entry *find_entry(const std::vector<Entry> &list, std::string Entry::*key, const std::string &path)
+    {
+      const auto found = std::find_if(list.begin(), list.end(), [&](const Entry &e) { return e.*key == path; });
+      return found == list.end() ? nullptr : &*found;
+    }
+  } // namespace
+
   const std::vector<RenamedEntry> &renamed_entries()
   {
     // "Pilot stage" split by concern: the reduced order's laws, the field level's mesh, its
@@ -42,10 +55,7 @@ namespace servodrift
 
   const RenamedEntry *renamed_entry(const std::string &path)
   {
-    for (const auto &entry : renamed_entries())
-      if (entry.old_path == path)
-        return &entry;
-    return nullptr;
+    return find_entry(renamed_entries(), &RenamedEntry::old_path, path);
   }
 
   const std::vector<RetiredEntry> &retired_entries()
@@ -60,10 +70,7 @@ namespace servodrift
 
   const RetiredEntry *retired_entry(const std::string &path)
   {
-    for (const auto &entry : retired_entries())
-      if (entry.path == path)
-        return &entry;
-    return nullptr;
+    return find_entry(retired_entries(), &RetiredEntry::path, path);
   }
 
   std::string retirement_warning(const std::string &where, const RetiredEntry &entry)
