@@ -16,7 +16,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -343,15 +342,7 @@ namespace
 
 int main(int argc, char **argv)
 {
-  // One thread per process: sweeps scale over MPI ranks, and OpenMP threads would only compete with
-  // them. CHOLMOD's supernodal factorisation asks for teams of a compiled-in 4 threads, which only
-  // OMP_THREAD_LIMIT caps, and libgomp reads it when it is loaded, before main: so restart once with
-  // the limit set (before MPI is initialised). A user's own OMP_THREAD_LIMIT is kept.
-  if (!std::getenv("OMP_THREAD_LIMIT"))
-    {
-      setenv("OMP_THREAD_LIMIT", "1", 1);
-      execv("/proc/self/exe", argv); // returns only on failure: then run with the threads
-    }
+  servodrift::one_thread_per_process();
   servodrift::prepare_mpi_singleton();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try

@@ -2,6 +2,7 @@
 // it was started through (build/bench/bench_flow ...) or by its first argument
 // (build/bench/servodrift_bench bench_flow ...). `servodrift_bench' alone lists them.
 #include "bench/benchmarks.h"
+#include "common/sweep.h"
 
 #include <cstdio>
 #include <cstring>
@@ -45,6 +46,7 @@ namespace
 
 int main(int argc, char **argv)
 {
+  servodrift::one_thread_per_process();
   const std::string program = argv[0];
   const std::string invoked = program.substr(program.find_last_of('/') + 1);
   if (const Driver *d = find(invoked))

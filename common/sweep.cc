@@ -8,6 +8,7 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <omp.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -24,6 +25,12 @@ namespace servodrift
       return;
     ::setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
     ::setenv("OMPI_MCA_pml", "^cm", 0);
+  }
+
+  void one_thread_per_process()
+  {
+    if (std::getenv("OMP_THREAD_LIMIT") == nullptr) // a user's own limit stands
+      omp_set_max_active_levels(0);
   }
 
   unsigned int mpi_rank()

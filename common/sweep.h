@@ -42,6 +42,13 @@ namespace servodrift
   /// Other MPI implementations ignore the variables.
   void prepare_mpi_singleton();
 
+  /// One thread per process: sweeps scale over MPI ranks, and OpenMP teams would only compete with
+  /// them (CHOLMOD's supernodal factorisation asks for teams of a compiled-in 4 threads). Unless the
+  /// environment sets OMP_THREAD_LIMIT, no OpenMP region is made active (max-active-levels 0), so
+  /// every team has one thread. Setting OMP_THREAD_LIMIT here would come too late: libgomp reads it
+  /// when it is loaded, before main. Call it first thing in main.
+  void one_thread_per_process();
+
   using CaseRows = std::vector<std::vector<double>>;
 
   /// Runs cases 0..n_cases-1 over the MPI ranks and returns all rows, in case order, on every rank.

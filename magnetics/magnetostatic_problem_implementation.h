@@ -30,7 +30,7 @@ namespace servodrift::magnetics
   {
     using EigenMatrix = Eigen::SparseMatrix<double>;
     // CHOLMOD's supernodal LL^T. Its OpenMP teams (a compiled-in 4 threads) would only compete with
-    // the MPI ranks that share out the sweeps; servodrift caps them with OMP_THREAD_LIMIT=1 (apps/).
+    // the MPI ranks that share out the sweeps; each main keeps them to one thread (common/sweep.h).
     using Cholesky = Eigen::CholmodSupernodalLLT<EigenMatrix, Eigen::Lower>;
 
     /// B = curl(A e_z) = (dA/dy, -dA/dx) in the plane

@@ -61,6 +61,7 @@ int main(int argc, char **argv)
     return RUN_ALL_TESTS();
   }
   const PrivateMpiSessionDirectory session; // before MPI_Init, removed after MPI_Finalize
+  servodrift::one_thread_per_process();
   servodrift::prepare_mpi_singleton();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   ::testing::InitGoogleTest(&argc, argv);

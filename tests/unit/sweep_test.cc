@@ -4,9 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <set>
+#include <string>
 #include <thread>
 
 using namespace servodrift;
@@ -86,4 +90,26 @@ TEST(Sweep, BroadcastBytesHandsOneRanksResultToAll)
   ASSERT_EQ(received.size(), 100000u);
   for (int k = 0; k < 100000; k += 997)
     EXPECT_EQ(received[std::size_t(k)], char(k % 251));
+}
+
+// CHOLMOD's supernodal factorisation asks libgomp for teams of 4; with max-active-levels 0 no region
+// becomes active and every team has one thread (OpenMP 5.1, 2.6.1). A user's OMP_THREAD_LIMIT stands.
+TEST(OpenMPTeams, OneThreadPerProcessUnlessTheUserSetsALimit)
+{
+  const char *set = std::getenv("OMP_THREAD_LIMIT");
+  const std::string user_limit = set ? set : "";
+  const int levels = omp_get_max_active_levels();
+
+  ::setenv("OMP_THREAD_LIMIT", "4", 1);
+  omp_set_max_active_levels(8);
+  servodrift::one_thread_per_process();
+  EXPECT_EQ(omp_get_max_active_levels(), 8);
+
+  ::unsetenv("OMP_THREAD_LIMIT");
+  servodrift::one_thread_per_process();
+  EXPECT_EQ(omp_get_max_active_levels(), 0);
+
+  if (set)
+    ::setenv("OMP_THREAD_LIMIT", user_limit.c_str(), 1);
+  omp_set_max_active_levels(levels);
 }
